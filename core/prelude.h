@@ -1,0 +1,62 @@
+// Language bridge for the polyglot core: every header in core/ compiles as C++17 (with GLM
+// supplying the GLSL vocabulary) and as GLSL 4.60 (through GL_GOOGLE_include_directive).
+//
+// Rules for core/ code, enforced by tests/glsl_core_compile: no references, pointers,
+// templates, classes, constructors, recursion or overloading on parameter qualifiers.
+// Output parameters use OUT(T)/INOUT(T); functions are declared with INLINE; float
+// literals carry an `f` suffix; structs are built field by field.
+#ifndef TWINRAY_CORE_PRELUDE_H
+#define TWINRAY_CORE_PRELUDE_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#define TR_NAMESPACE_BEGIN namespace tr {
+#define TR_NAMESPACE_END }
+#define INLINE inline
+#define OUT(T) T&
+#define INOUT(T) T&
+
+TR_NAMESPACE_BEGIN
+using namespace glm;
+using uint = std::uint32_t;
+TR_NAMESPACE_END
+
+#else  // GLSL
+
+#define TR_NAMESPACE_BEGIN
+#define TR_NAMESPACE_END
+#define INLINE
+#define OUT(T) out T
+#define INOUT(T) inout T
+
+#endif
+
+TR_NAMESPACE_BEGIN
+
+const float PI = 3.14159265358979323846f;
+const float INV_PI = 0.31830988618379067154f;
+const float INV_TWO_PI = 0.15915494309189533577f;
+const float INV_FOUR_PI = 0.07957747154594766788f;
+const float FLOAT_MAX = 3.402823466e+38f;
+const float ONE_MINUS_EPSILON = 0.99999994f;  // largest float below 1
+const uint NO_INDEX = 0xffffffffu;
+
+INLINE float sqr(float x) { return x * x; }
+
+// sqrt/acos guarded against arguments pushed out of their domain by rounding.
+INLINE float safe_sqrt(float x) { return sqrt(max(x, 0.0f)); }
+INLINE float safe_acos(float x) { return acos(clamp(x, -1.0f, 1.0f)); }
+INLINE float safe_asin(float x) { return asin(clamp(x, -1.0f, 1.0f)); }
+
+INLINE float max_component(vec3 v) { return max(v.x, max(v.y, v.z)); }
+INLINE float luminance(vec3 rgb) {
+  // Rec. 709 / linear sRGB luminance weights (ITU-R BT.709-6, item 3.3).
+  return dot(rgb, vec3(0.212671f, 0.715160f, 0.072169f));
+}
+
+TR_NAMESPACE_END
+
+#endif

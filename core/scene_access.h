@@ -1,0 +1,28 @@
+// Scene data access used by the shared light-transport code. Each backend defines these
+// functions: the CPU backend over the host vectors of tr::SceneBuffers (cpu_backend/
+// scene_access.cpp), the GPU backend over the std430 storage buffers of the same records
+// (shaders/scene_access.glsl). Core code never touches scene memory any other way, so both
+// backends read identical data through identical arithmetic.
+#ifndef TWINRAY_CORE_SCENE_ACCESS_H
+#define TWINRAY_CORE_SCENE_ACCESS_H
+
+#include "core/scene_types.h"
+
+TR_NAMESPACE_BEGIN
+
+SceneGlobals scene_globals();
+Material scene_material(uint index);
+Texture scene_texture(uint index);
+vec4 scene_texel(uint index);
+Emitter scene_emitter(uint index);
+AliasEntry scene_alias(uint index);
+Shape scene_shape(uint index);
+Instance scene_instance(uint index);
+vec3 scene_position(uint vertex);
+vec3 scene_normal(uint vertex);
+vec2 scene_uv(uint vertex);
+uint scene_index(uint index);
+
+TR_NAMESPACE_END
+
+#endif

@@ -1,0 +1,197 @@
+// Host/device scene records: one definition, shared by the C++ host and the GLSL shaders.
+// Every struct is std430-safe: members are grouped so that each vec3 is followed by a 4-byte
+// scalar, vec4/uvec4 sit on 16-byte boundaries, and every struct's size is a multiple of 16
+// (checked by static_asserts in scenes/scene.h). Row-major 3x4 affine transforms are stored
+// as three vec4 rows; apply them with the helpers in core/transform.h.
+#ifndef TWINRAY_CORE_SCENE_TYPES_H
+#define TWINRAY_CORE_SCENE_TYPES_H
+
+#include "core/prelude.h"
+
+TR_NAMESPACE_BEGIN
+
+// ---- Textures --------------------------------------------------------------------------
+const uint TEXTURE_BITMAP = 0u;
+const uint TEXTURE_CHECKERBOARD = 1u;
+
+const uint FILTER_NEAREST = 0u;
+const uint FILTER_BILINEAR = 1u;
+
+const uint WRAP_REPEAT = 0u;
+const uint WRAP_MIRROR = 1u;
+const uint WRAP_CLAMP = 2u;
+
+struct Texture {
+  uint type;          // TEXTURE_*
+  uint filter_mode;   // FILTER_* (bitmap)
+  uint wrap_mode;     // WRAP_* (bitmap)
+  uint texel_offset;  // first texel in the texel buffer (bitmap), row-major, top row first
+  uint width;
+  uint height;
+  uint pad0;
+  uint pad1;
+  vec4 color0;      // checkerboard color0
+  vec4 color1;      // checkerboard color1
+  vec4 to_uv[2];    // rows of the 2x3 affine uv transform (Mitsuba `to_uv`)
+};
+
+// A BSDF parameter that is either a constant or a texture lookup (texture != NO_INDEX).
+// Scalar parameters use value.x.
+struct TexturedValue {
+  vec3 value;
+  uint texture;
+};
+
+// ---- Materials (BSDFs) -----------------------------------------------------------------
+const uint BSDF_DIFFUSE = 0u;
+const uint BSDF_CONDUCTOR = 1u;
+const uint BSDF_ROUGHCONDUCTOR = 2u;
+const uint BSDF_DIELECTRIC = 3u;
+const uint BSDF_ROUGHDIELECTRIC = 4u;
+const uint BSDF_THINDIELECTRIC = 5u;
+const uint BSDF_PLASTIC = 6u;
+const uint BSDF_ROUGHPLASTIC = 7u;
+const uint BSDF_PRINCIPLED = 8u;
+
+// Material.flags
+const uint MATERIAL_TWOSIDED = 1u;        // Mitsuba `twosided` wrapper
+const uint MATERIAL_MASKED = 2u;          // Mitsuba `mask` wrapper, opacity in Material.opacity
+const uint MATERIAL_BECKMANN = 4u;        // microfacet distribution (GGX when clear)
+const uint MATERIAL_SAMPLE_VISIBLE = 8u;  // microfacet `sample_visible`
+const uint MATERIAL_NONLINEAR = 16u;      // plastic / roughplastic `nonlinear`
+
+// Parameter slots, per BSDF type (Material.param[i]); see core/bsdf/*.h for their meaning.
+const uint MATERIAL_PARAM_COUNT = 12u;
+
+struct Material {
+  uint type;   // BSDF_*
+  uint flags;  // MATERIAL_*
+  float eta;   // relative IOR int_ior / ext_ior (dielectrics, plastics, principled)
+  float extra; // per-type scalar (e.g. principled sampling rates), see core/bsdf/*.h
+  TexturedValue opacity;  // mask opacity (only with MATERIAL_MASKED)
+  TexturedValue param[MATERIAL_PARAM_COUNT];
+};
+
+// ---- Geometry --------------------------------------------------------------------------
+const uint SHAPE_MESH = 0u;      // triangles: index buffer + vertex buffers
+const uint SHAPE_SPHERE = 1u;    // unit sphere at the origin, through to_world
+const uint SHAPE_DISK = 2u;      // unit disk in the z=0 plane, normal +z, through to_world
+const uint SHAPE_CYLINDER = 3u;  // radius 1, z in [0,1], no caps, through to_world
+
+// Shape.flags
+const uint SHAPE_HAS_NORMALS = 1u;  // per-vertex shading normals present
+const uint SHAPE_HAS_UVS = 2u;      // per-vertex uvs present
+const uint SHAPE_FLIP_NORMALS = 4u; // Mitsuba `flip_normals`
+
+struct Shape {
+  uint type;      // SHAPE_*
+  uint flags;     // SHAPE_*
+  uint material;  // index into materials
+  uint emitter;   // index into emitters, or NO_INDEX
+  uint first_index;     // meshes: offset into the index buffer (3 indices per triangle)
+  uint triangle_count;  // meshes: number of triangles
+  uint first_vertex;    // meshes: added to every index
+  uint vertex_count;
+  vec4 to_world[3];     // analytic shapes: object->world (mesh vertices are pre-transformed)
+  vec4 to_object[3];    // analytic shapes: world->object
+  float area;           // world-space surface area
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// An instance places a range of shapes (a top-level set or a Mitsuba `shapegroup`) in the
+// world. Shapes outside any shapegroup belong to instance 0, whose transform is the identity.
+struct Instance {
+  vec4 to_world[3];
+  vec4 to_object[3];
+  uint first_shape;
+  uint shape_count;
+  uint pad0;
+  uint pad1;
+};
+
+// ---- Emitters --------------------------------------------------------------------------
+const uint EMITTER_AREA = 0u;
+const uint EMITTER_POINT = 1u;
+const uint EMITTER_DIRECTIONAL = 2u;
+const uint EMITTER_CONSTANT = 3u;
+const uint EMITTER_ENVMAP = 4u;
+
+struct Emitter {
+  uint type;           // EMITTER_*
+  uint shape;          // area: the emitting shape
+  uint texture;        // envmap: its bitmap texture
+  uint alias_offset;   // area meshes: per-triangle alias table; envmap: per-texel alias table
+  vec3 radiance;       // area/constant: radiance; point: intensity; directional: irradiance;
+  float scale;         // envmap: `scale`
+  vec3 position;       // point: position
+  uint alias_count;
+  vec3 direction;      // directional: unit direction of travel
+  float pad0;
+  vec4 to_world[3];    // envmap: rotation local->world
+  vec4 to_local[3];    // envmap: rotation world->local
+};
+
+// Walker/Vose alias table entry (Vose 1991): pick bin i = floor(u * n); keep it with
+// probability q, otherwise take `alias`. `pmf` is bin i's own probability.
+struct AliasEntry {
+  float q;
+  uint alias;
+  float pmf;
+  uint pad;
+};
+
+// ---- Camera, film, integrator ----------------------------------------------------------
+const uint SENSOR_PERSPECTIVE = 0u;
+const uint SENSOR_THINLENS = 1u;
+
+const uint RFILTER_BOX = 0u;
+const uint RFILTER_GAUSSIAN = 1u;
+
+const uint INTEGRATOR_PATH = 0u;
+const uint INTEGRATOR_DIRECT = 1u;
+
+struct Camera {
+  vec4 to_world[3];       // camera->world; camera looks along +z, +x left, +y up (Mitsuba)
+  uint type;              // SENSOR_*
+  uint width;             // film size in pixels
+  uint height;
+  uint rfilter;           // RFILTER_*
+  vec2 tan_half_fov;      // tan of half the field of view along x and y
+  vec2 principal_point;   // Mitsuba principal_point_offset_{x,y}, in fractions of the film
+  float near_clip;
+  float far_clip;
+  float aperture_radius;  // thinlens
+  float focus_distance;   // thinlens
+  float filter_stddev;    // gaussian
+  float filter_radius;    // gaussian
+  uint crop_offset_x;
+  uint crop_offset_y;
+};
+
+struct Integrator {
+  uint type;              // INTEGRATOR_*
+  int max_depth;          // -1: unbounded (Mitsuba semantics)
+  int rr_depth;
+  uint hide_emitters;
+  uint emitter_samples;   // direct
+  uint bsdf_samples;      // direct
+  uint pad0;
+  uint pad1;
+};
+
+struct SceneGlobals {
+  Camera camera;
+  Integrator integrator;
+  uint emitter_count;
+  uint emitter_alias_offset;  // power-proportional emitter selection table
+  uint environment;           // the constant/envmap emitter, or NO_INDEX
+  uint instance_count;
+  vec3 bounds_center;         // bounding sphere of the scene geometry
+  float bounds_radius;
+};
+
+TR_NAMESPACE_END
+
+#endif
