@@ -1,0 +1,51 @@
+// Meaning of Material.param[i] for each BSDF type (Mitsuba 3 parameter names). The loader
+// (scenes/) writes these slots, the BSDFs (core/bsdf/) read them; scalar parameters use
+// value.x. Roughness slots hold Mitsuba's alpha (already squared from principled roughness
+// where the BSDF defines it so).
+#ifndef TWINRAY_CORE_MATERIAL_SLOTS_H
+#define TWINRAY_CORE_MATERIAL_SLOTS_H
+
+#include "core/prelude.h"
+
+TR_NAMESPACE_BEGIN
+
+// diffuse
+const uint DIFFUSE_REFLECTANCE = 0u;
+
+// conductor, roughconductor
+const uint CONDUCTOR_ETA = 0u;  // real part of the complex IOR (per RGB channel)
+const uint CONDUCTOR_K = 1u;    // imaginary part
+const uint CONDUCTOR_SPECULAR_REFLECTANCE = 2u;
+const uint CONDUCTOR_ALPHA_U = 3u;  // roughconductor only
+const uint CONDUCTOR_ALPHA_V = 4u;
+
+// dielectric, roughdielectric, thindielectric (relative IOR in Material.eta)
+const uint DIELECTRIC_SPECULAR_REFLECTANCE = 0u;
+const uint DIELECTRIC_SPECULAR_TRANSMITTANCE = 1u;
+const uint DIELECTRIC_ALPHA_U = 2u;  // roughdielectric only
+const uint DIELECTRIC_ALPHA_V = 3u;
+
+// plastic, roughplastic (relative IOR in Material.eta)
+const uint PLASTIC_DIFFUSE_REFLECTANCE = 0u;
+const uint PLASTIC_SPECULAR_REFLECTANCE = 1u;
+const uint PLASTIC_ALPHA = 2u;  // roughplastic only
+
+// principled (Material.eta holds `eta`)
+const uint PRINCIPLED_BASE_COLOR = 0u;
+const uint PRINCIPLED_ROUGHNESS = 1u;
+const uint PRINCIPLED_METALLIC = 2u;
+const uint PRINCIPLED_SPECULAR = 3u;
+const uint PRINCIPLED_SPEC_TINT = 4u;
+const uint PRINCIPLED_ANISOTROPIC = 5u;
+const uint PRINCIPLED_SHEEN = 6u;
+const uint PRINCIPLED_SHEEN_TINT = 7u;
+const uint PRINCIPLED_CLEARCOAT = 8u;
+const uint PRINCIPLED_CLEARCOAT_GLOSS = 9u;
+const uint PRINCIPLED_SPEC_TRANS = 10u;
+// value = (diffuse_reflectance_sampling_rate, main_specular_sampling_rate,
+//          clearcoat_sampling_rate), never textured
+const uint PRINCIPLED_SAMPLING_RATES = 11u;
+
+TR_NAMESPACE_END
+
+#endif
