@@ -1,0 +1,45 @@
+// Backend-neutral rendering interface: what a backend is asked for and what it returns.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace tr {
+
+struct Scene;
+
+// Called with (samples done, samples total) as the render progresses; may be empty.
+using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
+
+struct RenderOptions {
+  std::uint32_t spp = 0;      // samples per pixel (0: the scene's sampler sample_count)
+  std::uint32_t seed = 0;
+  std::uint32_t threads = 0;  // CPU worker threads (0: all cores)
+  std::string device;         // GPU device index or name substring ("" = first usable)
+  ProgressFn progress;
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  std::uint64_t samples = 0;            // camera paths traced
+  std::uint64_t rays = 0;               // closest-hit + shadow rays
+  std::uint64_t rejected_nonfinite = 0; // samples whose radiance was NaN/Inf, counted as 0
+};
+
+// Per pixel, per channel (RGB, row-major, top row first): the sample mean and the unbiased
+// per-sample variance (Mitsuba `moment` semantics), accumulated in double.
+struct RenderResult {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t spp = 0;
+  std::uint32_t seed = 0;
+  std::vector<double> mean;
+  std::vector<double> variance;
+  RenderStats stats;
+  std::string backend;  // "cpu" or "gpu"
+  std::string device;   // e.g. "Embree 3.13.5, 2 threads" or the Vulkan device name
+};
+
+}  // namespace tr
