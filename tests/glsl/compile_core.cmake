@@ -1,0 +1,16 @@
+file(GLOB_RECURSE headers RELATIVE ${ROOT} ${ROOT}/core/*.h)
+list(SORT headers)
+set(body "#version 460\n#extension GL_GOOGLE_include_directive : require\n")
+string(APPEND body "#include \"shaders/scene_access.glsl\"\n")
+foreach(h ${headers})
+  string(APPEND body "#include \"${h}\"\n")
+endforeach()
+string(APPEND body "layout(local_size_x = 1) in;\nvoid main() {}\n")
+file(WRITE ${OUT}/all_core_headers.comp "${body}")
+execute_process(COMMAND ${GLSLANG} -V --target-env vulkan1.3 -I${ROOT} -o ${OUT}/all_core_headers.spv
+                        ${OUT}/all_core_headers.comp
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "core/ headers do not compile as GLSL (${headers})")
+endif()
+message(STATUS "compiled ${OUT}/all_core_headers.comp: ${headers}")
