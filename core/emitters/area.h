@@ -1,0 +1,157 @@
+// Mitsuba `area`: uniform radiance L leaving the front side (shading normal side) of a shape.
+//
+// Sampling picks a point on the shape and converts the area density to solid angle,
+// p_w = p_A r^2 / |cos theta_l| (pbrt-v4 §4.2.3, eq. 4.9). Meshes: a triangle with
+// probability proportional to its area (the emitter's alias table), then a uniform point in
+// it (Heitz 2019), so p_A = 1 / total area. Spheres seen from outside: uniform cone of
+// directions subtending the sphere (pbrt-v4 §6.2.4, Sphere::Sample with a reference point).
+// Disks and cylinders: uniform area (their transforms must be similarities).
+#ifndef TWINRAY_CORE_EMITTERS_AREA_H
+#define TWINRAY_CORE_EMITTERS_AREA_H
+
+#include "core/alias.h"
+#include "core/emitters/emitter_sample.h"
+#include "core/frame.h"
+#include "core/rng.h"
+#include "core/scene_access.h"
+#include "core/transform.h"
+#include "core/warp.h"
+
+TR_NAMESPACE_BEGIN
+
+INLINE vec3 sphere_center(Shape s) { return vec3(s.to_world[0].w, s.to_world[1].w, s.to_world[2].w); }
+INLINE float sphere_radius(Shape s) { return length(vec3(s.to_world[0].x, s.to_world[1].x, s.to_world[2].x)); }
+
+// sin^2(1.5 degrees): below it, cone quantities use Taylor expansions (pbrt-v4 §6.2.4).
+const float SMALL_CONE_SIN2 = 0.00068523f;
+
+// 1 - cos(theta_max) of the cone of directions from p that hits the sphere, accurate for
+// small cones; returns false when p is inside (or on) the sphere, where no cone exists.
+INLINE bool sphere_cone(Shape s, vec3 p, OUT(float) one_minus_cos_max) {
+  vec3 c = sphere_center(s);
+  float r = sphere_radius(s);
+  float dist2 = dot(c - p, c - p);
+  if (dist2 <= r * r * 1.0001f) return false;
+  float sin2_max = r * r / dist2;
+  one_minus_cos_max = sin2_max < SMALL_CONE_SIN2 ? 0.5f * sin2_max : 1.0f - safe_sqrt(1.0f - sin2_max);
+  return true;
+}
+
+// A point on the shape, uniform in area, with its normal (flip_normals applied; mesh shading
+// normals interpolated where present, as Mitsuba's Mesh::sample_position).
+INLINE void sample_shape_area(Emitter e, Shape s, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
+  if (s.type == SHAPE_MESH) {
+    float pmf;
+    uint tri = alias_sample(e.alias_offset, e.alias_count, rng_next_2d(rng), pmf);
+    vec2 b = square_to_uniform_triangle(rng_next_2d(rng));
+    uint base = s.first_index + 3u * tri;
+    uint i0 = s.first_vertex + scene_index(base);
+    uint i1 = s.first_vertex + scene_index(base + 1u);
+    uint i2 = s.first_vertex + scene_index(base + 2u);
+    vec3 p0 = scene_position(i0);
+    vec3 p1 = scene_position(i1);
+    vec3 p2 = scene_position(i2);
+    float b0 = 1.0f - b.x - b.y;
+    p = b0 * p0 + b.x * p1 + b.y * p2;
+    if ((s.flags & SHAPE_HAS_NORMALS) != 0u)
+      n = normalize(b0 * scene_normal(i0) + b.x * scene_normal(i1) + b.y * scene_normal(i2));
+    else
+      n = normalize(cross(p1 - p0, p2 - p0));
+  } else {
+    vec2 u = rng_next_2d(rng);
+    vec3 local;
+    vec3 n_local;
+    if (s.type == SHAPE_SPHERE) {
+      local = square_to_uniform_sphere(u);
+      n_local = local;
+    } else if (s.type == SHAPE_DISK) {
+      vec2 d = square_to_uniform_disk_concentric(u);
+      local = vec3(d.x, d.y, 0.0f);
+      n_local = vec3(0.0f, 0.0f, 1.0f);
+    } else {
+      float phi = 2.0f * PI * u.y;
+      local = vec3(cos(phi), sin(phi), u.x);
+      n_local = vec3(local.x, local.y, 0.0f);
+    }
+    p = transform_point(s.to_world[0], s.to_world[1], s.to_world[2], local);
+    n = normalize(transform_normal(s.to_object[0], s.to_object[1], s.to_object[2], n_local));
+  }
+  if ((s.flags & SHAPE_FLIP_NORMALS) != 0u) n = -n;
+}
+
+INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) {
+  EmitterSample s = emitter_sample_failed();
+  Shape shape = scene_shape(e.shape);
+  float one_minus_cos_max;
+  if (shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max)) {
+    // pbrt-v4 §6.2.4: sample cos(theta) in the cone, then the sphere point whose direction
+    // from the centre makes angle alpha with the axis (law of cosines).
+    vec2 u = rng_next_2d(rng);
+    vec3 c = sphere_center(shape);
+    float r = sphere_radius(shape);
+    float dc = length(c - ref_p);
+    float sin_max = r / dc;
+    float sin2_max = sin_max * sin_max;
+    float cos_theta = 1.0f - u.x * one_minus_cos_max;
+    float sin2_theta = 1.0f - cos_theta * cos_theta;
+    if (sin2_max < SMALL_CONE_SIN2) {
+      sin2_theta = sin2_max * u.x;
+      cos_theta = sqrt(1.0f - sin2_theta);
+    }
+    float cos_alpha = sin2_theta / sin_max + cos_theta * safe_sqrt(1.0f - sin2_theta / sin2_max);
+    float sin_alpha = safe_sqrt(1.0f - cos_alpha * cos_alpha);
+    float phi = 2.0f * PI * u.y;
+    Frame f = frame_from_normal((ref_p - c) / dc);
+    vec3 w = frame_to_world(f, vec3(sin_alpha * cos(phi), sin_alpha * sin(phi), cos_alpha));
+    s.p = c + r * w;
+    s.n = (shape.flags & SHAPE_FLIP_NORMALS) != 0u ? -w : w;
+    vec3 v = s.p - ref_p;
+    s.dist = length(v);
+    s.d = v / s.dist;
+    s.pdf = 1.0f / (2.0f * PI * one_minus_cos_max);
+  } else {
+    vec3 p;
+    vec3 n;
+    sample_shape_area(e, shape, rng, p, n);
+    vec3 v = p - ref_p;
+    float dist2 = dot(v, v);
+    if (!(dist2 > 0.0f)) return s;
+    s.p = p;
+    s.n = n;
+    s.dist = sqrt(dist2);
+    s.d = v / s.dist;
+    float cos_l = abs(dot(n, s.d));
+    if (!(cos_l > 0.0f)) return s;
+    s.pdf = dist2 / (cos_l * shape.area);
+  }
+  // One-sided emission: only the side the normal faces emits (Mitsuba's area emitter).
+  if (!(dot(s.n, s.d) < 0.0f)) {
+    s.pdf = 0.0f;
+    return s;
+  }
+  s.weight = e.radiance / s.pdf;
+  return s;
+}
+
+// Solid-angle density with which sample_area_emitter produces the point p (normal n)
+// from ref_p.
+INLINE float pdf_area_emitter(Emitter e, vec3 ref_p, vec3 p, vec3 n) {
+  Shape shape = scene_shape(e.shape);
+  float one_minus_cos_max;
+  if (shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max))
+    return 1.0f / (2.0f * PI * one_minus_cos_max);
+  vec3 v = p - ref_p;
+  float dist2 = dot(v, v);
+  float cos_l = abs(dot(n, v)) * inversesqrt(dist2);
+  if (!(cos_l > 0.0f)) return 0.0f;
+  return dist2 / (cos_l * shape.area);
+}
+
+// Radiance leaving the emitter towards wi (local shading frame of the emitter's surface).
+INLINE vec3 eval_area_emitter(Emitter e, vec3 wi_local) {
+  return wi_local.z > 0.0f ? e.radiance : vec3(0.0f);
+}
+
+TR_NAMESPACE_END
+
+#endif

@@ -1,0 +1,125 @@
+// Surface interactions: everything the light-transport code needs at a ray hit, rebuilt from
+// a backend's Hit record and the scene buffers (identical on every backend).
+#ifndef TWINRAY_CORE_INTERACTION_H
+#define TWINRAY_CORE_INTERACTION_H
+
+#include "core/frame.h"
+#include "core/hit.h"
+#include "core/ray.h"
+#include "core/scene_access.h"
+#include "core/shapes/cylinder.h"
+#include "core/shapes/disk.h"
+#include "core/shapes/sphere.h"
+#include "core/transform.h"
+
+TR_NAMESPACE_BEGIN
+
+struct SurfaceInteraction {
+  vec3 p;         // world-space position
+  float t;        // ray parameter
+  vec3 ng;        // geometric normal (unit; winding / flip_normals orientation, as Mitsuba)
+  uint shape;
+  Frame frame;    // shading frame, frame.n = shading normal
+  vec3 wi;        // direction towards the ray origin, in the shading frame
+  uint material;
+  vec2 uv;
+  uint emitter;   // NO_INDEX unless the shape is an area emitter
+  uint instance;
+};
+
+// Mitsuba's shading frame: s follows dp/du projected onto the tangent plane when the
+// parameterization provides it, otherwise Duff et al.'s basis (Mitsuba coordinate_system).
+INLINE Frame shading_frame(vec3 n, vec3 dp_du) {
+  vec3 s = dp_du - n * dot(n, dp_du);
+  float len2 = dot(s, s);
+  if (!(len2 > 1e-20f)) return frame_from_normal(n);
+  Frame f;
+  f.n = n;
+  f.s = s * inversesqrt(len2);
+  f.t = cross(n, f.s);
+  return f;
+}
+
+INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
+  Shape shape = scene_shape(hit.shape);
+  Instance inst = scene_instance(hit.instance);
+  SurfaceInteraction si;
+  si.t = hit.t;
+  si.shape = hit.shape;
+  si.instance = hit.instance;
+  si.material = shape.material;
+  si.emitter = shape.emitter;
+  vec3 n_shading;
+  vec3 dp_du = vec3(0.0f);
+  if (shape.type == SHAPE_MESH) {
+    uint base = shape.first_index + 3u * hit.primitive;
+    uint i0 = shape.first_vertex + scene_index(base);
+    uint i1 = shape.first_vertex + scene_index(base + 1u);
+    uint i2 = shape.first_vertex + scene_index(base + 2u);
+    vec3 p0 = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i0));
+    vec3 p1 = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i1));
+    vec3 p2 = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i2));
+    float b1 = hit.barycentrics.x;
+    float b2 = hit.barycentrics.y;
+    float b0 = 1.0f - b1 - b2;
+    si.p = b0 * p0 + b1 * p1 + b2 * p2;
+    si.ng = normalize(cross(p1 - p0, p2 - p0));
+    if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) si.ng = -si.ng;
+    n_shading = si.ng;
+    if ((shape.flags & SHAPE_HAS_NORMALS) != 0u) {
+      vec3 n = b0 * scene_normal(i0) + b1 * scene_normal(i1) + b2 * scene_normal(i2);
+      n = transform_normal(inst.to_object[0], inst.to_object[1], inst.to_object[2], n);
+      n_shading = normalize(n);
+      if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) n_shading = -n_shading;
+    }
+    si.uv = vec2(b1, b2);
+    if ((shape.flags & SHAPE_HAS_UVS) != 0u) {
+      vec2 uv0 = scene_uv(i0);
+      vec2 uv1 = scene_uv(i1);
+      vec2 uv2 = scene_uv(i2);
+      si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
+      // dp/du from the triangle's uv parameterization (pbrt-v4 §6.5.3, eq. 6.7).
+      vec2 duv02 = uv0 - uv2;
+      vec2 duv12 = uv1 - uv2;
+      float det = duv02.x * duv12.y - duv02.y * duv12.x;
+      if (abs(det) > 1e-20f) dp_du = (duv12.y * (p0 - p2) - duv02.y * (p1 - p2)) / det;
+    }
+  } else {
+    vec3 p_inst = ray.o + hit.t * ray.d;
+    p_inst = transform_point(inst.to_object[0], inst.to_object[1], inst.to_object[2], p_inst);
+    vec3 local = transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], p_inst);
+    vec3 n_local;
+    vec3 dp_du_local;
+    if (shape.type == SHAPE_SPHERE) {
+      local = normalize(local);  // reproject onto the surface, as Mitsuba
+      n_local = local;
+      si.uv = unit_sphere_uv(local);
+      dp_du_local = vec3(-local.y, local.x, 0.0f);
+    } else if (shape.type == SHAPE_DISK) {
+      local.z = 0.0f;
+      n_local = vec3(0.0f, 0.0f, 1.0f);
+      si.uv = unit_disk_uv(local);
+      dp_du_local = vec3(local.x, local.y, 0.0f);
+    } else {
+      n_local = vec3(local.x, local.y, 0.0f);
+      si.uv = unit_cylinder_uv(local);
+      dp_du_local = vec3(-local.y, local.x, 0.0f);
+    }
+    vec3 p_world = transform_point(shape.to_world[0], shape.to_world[1], shape.to_world[2], local);
+    si.p = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], p_world);
+    vec3 n = transform_normal(shape.to_object[0], shape.to_object[1], shape.to_object[2], n_local);
+    n = transform_normal(inst.to_object[0], inst.to_object[1], inst.to_object[2], n);
+    si.ng = normalize(n);
+    if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) si.ng = -si.ng;
+    n_shading = si.ng;
+    dp_du = transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dp_du_local);
+    dp_du = transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], dp_du);
+  }
+  si.frame = shading_frame(n_shading, dp_du);
+  si.wi = frame_to_local(si.frame, -ray.d);
+  return si;
+}
+
+TR_NAMESPACE_END
+
+#endif
