@@ -25,8 +25,10 @@ INLINE float fresnel_dielectric(float cos_theta_i, float eta, OUT(float) cos_the
   float a_s = (cos_i - eta_it * cos_t) / (cos_i + eta_it * cos_t);
   float a_p = (cos_t - eta_it * cos_i) / (cos_t + eta_it * cos_i);
   float r = 0.5f * (a_s * a_s + a_p * a_p);
-  if (eta == 1.0f) r = 0.0f;
-  else if (cos_i == 0.0f) r = 1.0f;
+  if (eta == 1.0f)
+    r = 0.0f;
+  else if (cos_i == 0.0f)
+    r = 1.0f;
   cos_theta_t = cos_theta_i >= 0.0f ? -cos_t : cos_t;
   return r;
 }
@@ -56,7 +58,9 @@ INLINE vec3 fresnel_conductor(float cos_theta_i, vec3 eta, vec3 k) {
   vec3 r_s = (term1 - term2) / (term1 + term2);
   vec3 term3 = a2_plus_b2 * cos2 + vec3(sin4);
   vec3 term4 = term2 * sin2;
-  vec3 r_p = r_s * (term3 - term4) / (term3 + term4);
+  // eta = k = 0 at normal incidence makes the ratio 0/0; its limit is 1.
+  vec3 ratio = (term3 - term4) / max(term3 + term4, vec3(1e-30f));
+  vec3 r_p = r_s * mix(ratio, vec3(1.0f), lessThanEqual(term3 + term4, vec3(0.0f)));
   return 0.5f * (r_s + r_p);
 }
 
@@ -69,8 +73,8 @@ INLINE float fresnel_diffuse_reflectance(float eta) {
   if (eta < 1.0f) return 0.0636f * inv_eta + eta * (eta * -1.4399f + 0.7099f) + 0.6681f;
   return 0.919317f +
          inv_eta * (-3.4793f +
-                    inv_eta * (6.75335f + inv_eta * (-7.80989f +
-                                                     inv_eta * (4.98554f + inv_eta * -1.36881f))));
+                    inv_eta * (6.75335f +
+                               inv_eta * (-7.80989f + inv_eta * (4.98554f + inv_eta * -1.36881f))));
 }
 
 // Mirror direction about the normal (+z) and about a microfacet normal m.

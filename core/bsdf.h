@@ -1,0 +1,113 @@
+// The BSDF interface of the path tracer: flags, eval, pdf and sample of any Material, with
+// Mitsuba 3 semantics. Each BSDF lives in core/bsdf/<name>.h; this file dispatches on
+// Material.type and applies the two wrappers a Material can carry:
+//   MATERIAL_TWOSIDED — Mitsuba `twosided` with one nested BSDF (src/bsdfs/twosided.cpp):
+//     a direction wi below the surface is mirrored to the front side, wo keeps its side
+//     relative to wi, sampled directions are mirrored back.
+//   MATERIAL_MASKED — Mitsuba `mask` (src/bsdfs/mask.cpp): with opacity alpha, eval and pdf
+//     are the nested ones times alpha; sampling passes straight through (null lobe, wo = -wi,
+//     weight 1, pdf 1 - alpha) with probability 1 - alpha, else samples the nested BSDF with
+//     u1 rescaled to [0, 1) (pdf times alpha, weight unchanged).
+// The two wrappers commute, so their nesting order in the scene file does not matter.
+//
+//   bsdf_flags(m, uv)           lobes this material can produce (BSDF_* bits)
+//   bsdf_eval(m, uv, wi, wo)    f(wi, wo) |cos theta_o|, zero for delta lobes
+//   bsdf_pdf(m, uv, wi, wo)     solid-angle density of bsdf_sample returning wo (smooth lobes)
+//   bsdf_sample(m, uv, wi, u1, u2)
+#ifndef TWINRAY_CORE_BSDF_H
+#define TWINRAY_CORE_BSDF_H
+
+#include "core/bsdf/common.h"
+#include "core/bsdf/conductor.h"
+#include "core/bsdf/dielectric.h"
+#include "core/bsdf/diffuse.h"
+
+TR_NAMESPACE_BEGIN
+
+INLINE uint bsdf_base_flags(Material m, vec2 uv) {
+  switch (m.type) {
+    case BSDF_DIFFUSE:
+      return diffuse_flags(m, uv);
+    case BSDF_CONDUCTOR:
+      return conductor_flags(m, uv);
+    case BSDF_DIELECTRIC:
+      return dielectric_flags(m, uv);
+    default:
+      return 0u;
+  }
+}
+
+INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  switch (m.type) {
+    case BSDF_DIFFUSE:
+      return diffuse_eval(m, uv, wi, wo);
+    default:
+      return vec3(0.0f);
+  }
+}
+
+INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  switch (m.type) {
+    case BSDF_DIFFUSE:
+      return diffuse_pdf(m, uv, wi, wo);
+    default:
+      return 0.0f;
+  }
+}
+
+INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  switch (m.type) {
+    case BSDF_DIFFUSE:
+      return diffuse_sample(m, uv, wi, u1, u2);
+    case BSDF_CONDUCTOR:
+      return conductor_sample(m, uv, wi, u1, u2);
+    case BSDF_DIELECTRIC:
+      return dielectric_sample(m, uv, wi, u1, u2);
+    default:
+      return bsdf_sample_failed();
+  }
+}
+
+// Mask opacity, clipped to [0, 1] as Mitsuba's MaskBSDF::eval_opacity.
+INLINE float bsdf_opacity(Material m, vec2 uv) {
+  if ((m.flags & MATERIAL_MASKED) == 0u) return 1.0f;
+  return clamp(eval_textured_1(m.opacity, uv), 0.0f, 1.0f);
+}
+
+INLINE uint bsdf_flags(Material m, vec2 uv) {
+  uint flags = bsdf_base_flags(m, uv);
+  if ((m.flags & MATERIAL_MASKED) != 0u) flags |= BSDF_NULL;
+  return flags;
+}
+
+INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+    wo.z = mulsign(wo.z, wi.z);
+    wi.z = abs(wi.z);
+  }
+  return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m, uv);
+}
+
+INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+    wo.z = mulsign(wo.z, wi.z);
+    wi.z = abs(wi.z);
+  }
+  return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m, uv);
+}
+
+INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  float opacity = bsdf_opacity(m, uv);
+  if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
+  u1 = u1 / opacity;
+  float wi_z = wi.z;
+  if ((m.flags & MATERIAL_TWOSIDED) != 0u) wi.z = abs(wi.z);
+  BsdfSample s = bsdf_base_sample(m, uv, wi, u1, u2);
+  if ((m.flags & MATERIAL_TWOSIDED) != 0u) s.wo.z = mulsign(s.wo.z, wi_z);
+  s.pdf *= opacity;
+  return s;
+}
+
+TR_NAMESPACE_END
+
+#endif

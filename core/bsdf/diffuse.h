@@ -1,0 +1,36 @@
+// Mitsuba 3 `diffuse` (src/bsdfs/diffuse.cpp): Lambertian reflection f = reflectance / pi on
+// the front side only, sampled with the cosine-weighted hemisphere (pbrt-v4 §9.2).
+#ifndef TWINRAY_CORE_BSDF_DIFFUSE_H
+#define TWINRAY_CORE_BSDF_DIFFUSE_H
+
+#include "core/bsdf/common.h"
+#include "core/material_slots.h"
+#include "core/warp.h"
+
+TR_NAMESPACE_BEGIN
+
+INLINE uint diffuse_flags(Material m, vec2 uv) { return BSDF_DIFFUSE_REFLECTION; }
+
+INLINE vec3 diffuse_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
+  return eval_textured(m.param[DIFFUSE_REFLECTANCE], uv) * (INV_PI * wo.z);
+}
+
+INLINE float diffuse_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
+  return square_to_cosine_hemisphere_pdf(wo);
+}
+
+INLINE BsdfSample diffuse_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  if (wi.z <= 0.0f) return bsdf_sample_failed();
+  vec3 wo = square_to_cosine_hemisphere(u2);
+  float pdf = square_to_cosine_hemisphere_pdf(wo);
+  if (pdf <= 0.0f) return bsdf_sample_failed();
+  // f cos / pdf = (reflectance / pi) cos / (cos / pi) = reflectance.
+  return bsdf_sample_make(wo, pdf, eval_textured(m.param[DIFFUSE_REFLECTANCE], uv), 1.0f,
+                          BSDF_DIFFUSE_REFLECTION);
+}
+
+TR_NAMESPACE_END
+
+#endif

@@ -1,0 +1,217 @@
+// Anisotropic GGX and Beckmann microfacet distributions with Smith masking and (visible)
+// normal sampling, with the conventions of Mitsuba 3's MicrofacetDistribution
+// (include/mitsuba/render/microfacet.h): alphas are clamped to 1e-4, the sampled density is
+// D(m) cos(theta_m) or, with visible-normal sampling, the distribution of visible normals.
+//   D, G1, normal sampling: Walter et al., "Microfacet Models for Refraction through Rough
+//     Surfaces", EGSR 2007, eqs. 25-28 (Beckmann), 33-35 (GGX), anisotropic forms after
+//     Heitz, "Understanding the Masking-Shadowing Function", JCGT 3(2) 2014, eqs. 71-72, 86.
+//   Visible normals: Heitz & d'Eon, "Importance Sampling Microfacet-Based BSDFs using the
+//     Distribution of Visible Normals", EGSR 2014 (stretch, sample the slope for alpha = 1,
+//     rotate, unstretch; Beckmann slope by inverting eq. 14 numerically) and Heitz, "Sampling
+//     the GGX Distribution of Visible Normals", JCGT 7(4) 2018 (GGX, in the concentric-disk
+//     form Mitsuba uses).
+#ifndef TWINRAY_CORE_MICROFACET_H
+#define TWINRAY_CORE_MICROFACET_H
+
+#include "core/prelude.h"
+#include "core/warp.h"
+
+TR_NAMESPACE_BEGIN
+
+const float MICROFACET_MIN_ALPHA = 1e-4f;
+const float INV_SQRT_PI = 0.56418958354775628695f;
+
+struct Microfacet {
+  bool beckmann;        // GGX otherwise
+  bool sample_visible;  // sample the distribution of visible normals
+  float alpha_u;
+  float alpha_v;
+};
+
+INLINE Microfacet microfacet_make(bool beckmann, float alpha_u, float alpha_v,
+                                  bool sample_visible) {
+  Microfacet d;
+  d.beckmann = beckmann;
+  d.sample_visible = sample_visible;
+  d.alpha_u = max(alpha_u, MICROFACET_MIN_ALPHA);
+  d.alpha_v = max(alpha_v, MICROFACET_MIN_ALPHA);
+  return d;
+}
+
+// erf(x) = 1 - erfc(x); erfc by the Chebyshev fit of Numerical Recipes in C, 2nd ed., §6.2
+// (erfcc), fractional error < 1.2e-7.
+INLINE float beckmann_erf(float x) {
+  float z = abs(x);
+  float t = 1.0f / (1.0f + 0.5f * z);
+  float poly =
+      -1.26551223f +
+      t * (1.00002368f +
+           t * (0.37409196f +
+                t * (0.09678418f +
+                     t * (-0.18628806f +
+                          t * (0.27886807f +
+                               t * (-1.13520398f +
+                                    t * (1.48851587f + t * (-0.82215223f + t * 0.17087277f))))))));
+  float erfc_z = t * exp(-z * z + poly);
+  return x >= 0.0f ? 1.0f - erfc_z : erfc_z - 1.0f;
+}
+
+// Inverse error function, single-precision fit of Giles, "Approximating the erfinv function",
+// GPU Computing Gems Jade Edition, 2011. |x| is kept below 1 so the result stays finite.
+INLINE float beckmann_erfinv(float x) {
+  x = clamp(x, -ONE_MINUS_EPSILON, ONE_MINUS_EPSILON);
+  float w = -log((1.0f - x) * (1.0f + x));
+  float p;
+  if (w < 5.0f) {
+    w = w - 2.5f;
+    p = 2.81022636e-08f;
+    p = 3.43273939e-07f + p * w;
+    p = -3.5233877e-06f + p * w;
+    p = -4.39150654e-06f + p * w;
+    p = 0.00021858087f + p * w;
+    p = -0.00125372503f + p * w;
+    p = -0.00417768164f + p * w;
+    p = 0.246640727f + p * w;
+    p = 1.50140941f + p * w;
+  } else {
+    w = sqrt(w) - 3.0f;
+    p = -0.000200214257f;
+    p = 0.000100950558f + p * w;
+    p = 0.00134934322f + p * w;
+    p = -0.00367342844f + p * w;
+    p = 0.00573950773f + p * w;
+    p = -0.0076224613f + p * w;
+    p = 0.00943887047f + p * w;
+    p = 1.00167406f + p * w;
+    p = 2.83297682f + p * w;
+  }
+  return p * x;
+}
+
+// Normal distribution D(m) (Walter et al. eqs. 25 and 33, anisotropic: Heitz 2014 eqs. 71, 86).
+INLINE float microfacet_d(Microfacet d, vec3 m) {
+  float cos_theta = m.z;
+  if (cos_theta <= 0.0f) return 0.0f;
+  float cos_theta_2 = cos_theta * cos_theta;
+  float xu = m.x / d.alpha_u;
+  float yv = m.y / d.alpha_v;
+  float result;
+  if (d.beckmann) {
+    result = exp(-(xu * xu + yv * yv) / cos_theta_2) /
+             (PI * d.alpha_u * d.alpha_v * cos_theta_2 * cos_theta_2);
+  } else {
+    float s = xu * xu + yv * yv + cos_theta_2;
+    result = 1.0f / (PI * d.alpha_u * d.alpha_v * s * s);
+  }
+  return result * cos_theta > 1e-20f ? result : 0.0f;
+}
+
+// Smith's masking term G1(v, m) for the uncorrelated-height model (Walter et al. eqs. 27, 34);
+// Beckmann through Walter et al.'s rational approximation (eq. 27, < 0.35% error). Zero where
+// v would see the back of the microfacet (Walter et al. eq. 7, the chi+ factor).
+INLINE float microfacet_smith_g1(Microfacet d, vec3 v, vec3 m) {
+  float xy_alpha_2 = sqr(d.alpha_u * v.x) + sqr(d.alpha_v * v.y);
+  if (dot(v, m) * v.z <= 0.0f) return 0.0f;
+  if (xy_alpha_2 == 0.0f) return 1.0f;
+  float tan_theta_alpha_2 = xy_alpha_2 / (v.z * v.z);
+  if (d.beckmann) {
+    float a = 1.0f / sqrt(tan_theta_alpha_2);
+    if (a >= 1.6f) return 1.0f;
+    return (3.535f * a + 2.181f * a * a) / (1.0f + 2.276f * a + 2.577f * a * a);
+  }
+  return 2.0f / (1.0f + sqrt(1.0f + tan_theta_alpha_2));
+}
+
+INLINE float microfacet_g(Microfacet d, vec3 wi, vec3 wo, vec3 m) {
+  return microfacet_smith_g1(d, wi, m) * microfacet_smith_g1(d, wo, m);
+}
+
+// Solid-angle density of microfacet_sample: D(m) cos(theta_m), or the distribution of visible
+// normals D_wi(m) = G1(wi, m) |wi.m| D(m) / cos(theta_i) (Heitz & d'Eon 2014, eq. 2).
+INLINE float microfacet_pdf(Microfacet d, vec3 wi, vec3 m) {
+  float result = microfacet_d(d, m);
+  if (d.sample_visible) return result * microfacet_smith_g1(d, wi, m) * abs(dot(wi, m)) / wi.z;
+  return result * m.z;
+}
+
+// Slope (x, y) of a visible normal for the configuration alpha = 1, phi_i = 0.
+INLINE vec2 microfacet_sample_visible_11(bool beckmann, float cos_theta_i, vec2 u) {
+  if (beckmann) {
+    // Heitz & d'Eon 2014, §4.2 / appendix: invert the CDF of the slope x (eq. 14) in the
+    // erf domain by Newton steps from the analytic grazing-angle guess, then sample y from
+    // the normal distribution.
+    float tan_theta_i = safe_sqrt(1.0f - cos_theta_i * cos_theta_i) / cos_theta_i;
+    float cot_theta_i = 1.0f / tan_theta_i;
+    float maxval = beckmann_erf(cot_theta_i);
+    u = clamp(u, vec2(1e-6f), vec2(1.0f - 1e-6f));
+    float x = maxval - (maxval + 1.0f) * beckmann_erf(sqrt(-log(u.x)));
+    float target = u.x * (1.0f + maxval + INV_SQRT_PI * tan_theta_i * exp(-sqr(cot_theta_i)));
+    for (int i = 0; i < 3; ++i) {
+      float slope = beckmann_erfinv(x);
+      float value = 1.0f + x + INV_SQRT_PI * tan_theta_i * exp(-slope * slope) - target;
+      float derivative = 1.0f - slope * tan_theta_i;
+      x -= value / derivative;
+    }
+    return vec2(beckmann_erfinv(x), beckmann_erfinv(2.0f * u.y - 1.0f));
+  }
+  // GGX: Heitz 2018 (Listing 1) — a uniform point on the disk, its upper half squeezed by
+  // (1 + cos theta_i) / 2, projected onto the hemisphere, read as a slope of the alpha = 1
+  // surface viewed from theta_i.
+  vec2 p = square_to_uniform_disk_concentric(u);
+  float s = 0.5f * (1.0f + cos_theta_i);
+  p.y = mix(safe_sqrt(1.0f - p.x * p.x), p.y, s);
+  float z = safe_sqrt(1.0f - dot(p, p));
+  float sin_theta_i = safe_sqrt(1.0f - cos_theta_i * cos_theta_i);
+  float norm = 1.0f / (sin_theta_i * p.y + cos_theta_i * z);
+  return vec2(cos_theta_i * p.y - sin_theta_i * z, p.x) * norm;
+}
+
+// Draws a microfacet normal for the direction wi (wi.z > 0); its density is microfacet_pdf.
+INLINE vec3 microfacet_sample(Microfacet d, vec3 wi, vec2 u) {
+  if (d.sample_visible) {
+    // Heitz & d'Eon 2014, §4.1: stretch wi, sample the alpha = 1 slope, rotate, unstretch.
+    vec3 wi_p = normalize(vec3(d.alpha_u * wi.x, d.alpha_v * wi.y, wi.z));
+    float sin2 = wi_p.x * wi_p.x + wi_p.y * wi_p.y;
+    float cos_phi = 1.0f;
+    float sin_phi = 0.0f;
+    if (sin2 > 0.0f) {
+      float inv_sin = 1.0f / sqrt(sin2);
+      cos_phi = clamp(wi_p.x * inv_sin, -1.0f, 1.0f);
+      sin_phi = clamp(wi_p.y * inv_sin, -1.0f, 1.0f);
+    }
+    vec2 slope = microfacet_sample_visible_11(d.beckmann, wi_p.z, u);
+    vec2 s = vec2((cos_phi * slope.x - sin_phi * slope.y) * d.alpha_u,
+                  (sin_phi * slope.x + cos_phi * slope.y) * d.alpha_v);
+    return normalize(vec3(-s.x, -s.y, 1.0f));
+  }
+  // Walter et al. eqs. 28 and 35 (theta_m), with the anisotropic azimuth of Heitz 2014
+  // (phi_m = atan(alpha_v / alpha_u tan(2 pi u)), quadrant kept).
+  float sin_phi;
+  float cos_phi;
+  float alpha_2;
+  if (d.alpha_u == d.alpha_v) {
+    float phi = 2.0f * PI * u.y;
+    sin_phi = sin(phi);
+    cos_phi = cos(phi);
+    alpha_2 = d.alpha_u * d.alpha_u;
+  } else {
+    float tmp = (d.alpha_v / d.alpha_u) * tan(2.0f * PI * u.y);
+    cos_phi = 1.0f / sqrt(tmp * tmp + 1.0f);
+    cos_phi = abs(u.y - 0.5f) - 0.25f >= 0.0f ? cos_phi : -cos_phi;
+    sin_phi = cos_phi * tmp;
+    alpha_2 = 1.0f / (sqr(cos_phi / d.alpha_u) + sqr(sin_phi / d.alpha_v));
+  }
+  float cos_theta;
+  if (d.beckmann) {
+    cos_theta = 1.0f / sqrt(1.0f - alpha_2 * log(1.0f - u.x));
+  } else {
+    float tan_theta_m_2 = alpha_2 * u.x / (1.0f - u.x);
+    cos_theta = 1.0f / sqrt(1.0f + tan_theta_m_2);
+  }
+  float sin_theta = safe_sqrt(1.0f - cos_theta * cos_theta);
+  return vec3(cos_phi * sin_theta, sin_phi * sin_theta, cos_theta);
+}
+
+TR_NAMESPACE_END
+
+#endif

@@ -1,0 +1,332 @@
+// Every BSDF through the public interface of core/bsdf.h: sample/pdf/eval consistency,
+// sampling against eval (albedo two ways), energy, reciprocity, extremes, known values.
+#include "core/bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bsdf_test_support.h"
+
+namespace tr {
+namespace {
+
+using namespace tr::test;
+
+struct Case {
+  std::string name;
+  Material material;
+  bool reciprocal;  // f(wi, wo) = f(wo, wi) for reflection
+  bool lossless;    // reflectances 1: the albedo (in power) is 1 up to the model's own loss
+};
+
+std::vector<Case> all_cases() {
+  std::vector<Case> cases;
+  cases.push_back({"diffuse", diffuse(vec3(0.2f, 0.5f, 0.8f)), true, false});
+  cases.push_back({"diffuse_white", diffuse(vec3(1.0f)), true, true});
+  cases.push_back({"conductor_gold",
+                   conductor(vec3(0.143f, 0.374f, 1.442f), vec3(3.983f, 2.385f, 1.603f)), true,
+                   false});
+  cases.push_back({"conductor_mirror", conductor(vec3(0.0f), vec3(1.0f)), true, true});
+  cases.push_back({"dielectric_1.5", dielectric(1.5f), true, true});
+  cases.push_back({"dielectric_inv1.5", dielectric(1.0f / 1.5f), true, true});
+  cases.push_back({"dielectric_1.0001", dielectric(1.0001f), true, true});
+  Material twosided = diffuse(vec3(0.7f));
+  twosided.flags |= MATERIAL_TWOSIDED;
+  cases.push_back({"twosided_diffuse", twosided, true, false});
+  Material masked = diffuse(vec3(0.7f));
+  masked.flags |= MATERIAL_MASKED;
+  masked.opacity = constant(0.3f);
+  cases.push_back({"masked_diffuse", masked, true, false});
+  return cases;
+}
+
+bool is_finite(vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool is_nonnegative(vec3 v) { return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f; }
+bool is_smooth(uint lobe) { return (lobe & BSDF_SMOOTH) != 0u; }
+bool is_transmission(vec3 wi, vec3 wo) { return wi.z * wo.z < 0.0f; }
+
+float rel_diff(float a, float b) { return std::abs(a - b) / std::max(std::abs(b), 1e-6f); }
+
+const float kCosines[] = {1.0f, 0.8f, 0.5f, 0.2f, 0.05f, -0.3f, -0.9f};
+
+class BsdfCase : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BsdfCase, SampleAgreesWithPdfAndEval) {
+  const Case& c = GetParam();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  int checked = 0;
+  for (float cos_i : kCosines) {
+    for (int i = 0; i < 2000; ++i) {
+      vec3 wi = direction(cos_i, 2.0f * float(M_PI) * uni(rng));
+      vec2 uv(uni(rng), uni(rng));
+      BsdfSample s = bsdf_sample(c.material, uv, wi, uni(rng), vec2(uni(rng), uni(rng)));
+      if (s.pdf == 0.0f) {
+        EXPECT_EQ(s.weight, vec3(0.0f));
+        continue;
+      }
+      ASSERT_TRUE(is_finite(s.weight) && is_nonnegative(s.weight)) << c.name;
+      ASSERT_NEAR(length(s.wo), 1.0f, 1e-4f) << c.name;
+      EXPECT_TRUE((bsdf_flags(c.material, uv) & s.lobe) != 0u) << c.name;
+      EXPECT_EQ(s.eta == 1.0f, !is_transmission(wi, s.wo) || s.lobe == BSDF_NULL) << c.name;
+      if (!is_smooth(s.lobe)) continue;
+      float pdf = bsdf_pdf(c.material, uv, wi, s.wo);
+      vec3 f = bsdf_eval(c.material, uv, wi, s.wo);
+      EXPECT_LT(rel_diff(s.pdf, pdf), 1e-3f) << c.name << " cos " << cos_i;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(s.weight[k], f[k] / pdf, 1e-3f * std::max(1.0f, s.weight[k])) << c.name;
+      }
+      ++checked;
+    }
+  }
+  if ((bsdf_flags(c.material, vec2(0.5f)) & BSDF_SMOOTH) != 0u) {
+    EXPECT_GT(checked, 0);
+  }
+}
+
+TEST_P(BsdfCase, EvalPositiveOnlyWherePdfPositive) {
+  const Case& c = GetParam();
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  for (float cos_i : kCosines) {
+    for (int i = 0; i < 2000; ++i) {
+      vec3 wi = direction(cos_i, 2.0f * float(M_PI) * uni(rng));
+      vec3 wo = square_to_uniform_sphere(vec2(uni(rng), uni(rng)));
+      vec3 f = bsdf_eval(c.material, vec2(0.5f), wi, wo);
+      float pdf = bsdf_pdf(c.material, vec2(0.5f), wi, wo);
+      ASSERT_TRUE(is_finite(f) && is_nonnegative(f) && std::isfinite(pdf) && pdf >= 0.0f);
+      if (max_component(f) > 0.0f) {
+        EXPECT_GT(pdf, 0.0f) << c.name;
+      }
+    }
+  }
+}
+
+// Albedo of the smooth lobes two ways: E[weight 1{smooth}] under the BSDF's own sampling and
+// E[eval / p] under uniform sphere sampling. Both estimate \int_smooth f |cos| dwo.
+TEST_P(BsdfCase, SampledAlbedoMatchesIntegratedEval) {
+  const Case& c = GetParam();
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  const int n = 100000;
+  for (float cos_i : {0.9f, 0.4f, -0.6f}) {
+    vec3 wi = direction(cos_i, 0.7f);
+    double s1 = 0, s1_sq = 0, s2 = 0, s2_sq = 0;
+    for (int i = 0; i < n; ++i) {
+      BsdfSample s = bsdf_sample(c.material, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng)));
+      double a = (s.pdf > 0.0f && is_smooth(s.lobe)) ? luminance(s.weight) : 0.0;
+      s1 += a;
+      s1_sq += a * a;
+      vec3 wo = square_to_uniform_sphere(vec2(uni(rng), uni(rng)));
+      double b = luminance(bsdf_eval(c.material, vec2(0.5f), wi, wo)) / INV_FOUR_PI;
+      s2 += b;
+      s2_sq += b * b;
+    }
+    double m1 = s1 / n, m2 = s2 / n;
+    double var = (s1_sq / n - m1 * m1) / n + (s2_sq / n - m2 * m2) / n;
+    EXPECT_NEAR(m1, m2, 5.0 * std::sqrt(var) + 1e-4) << c.name << " cos " << cos_i;
+  }
+}
+
+// Energy: the sampled throughput, with the radiance scaling of refraction (1 / eta^2)
+// removed, never exceeds 1 — and reaches 1 for lossless models.
+TEST_P(BsdfCase, AlbedoAtMostOne) {
+  const Case& c = GetParam();
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  const int n = 50000;
+  for (float cos_i : {1.0f, 0.6f, 0.1f, -0.5f}) {
+    vec3 wi = direction(cos_i, 0.3f);
+    double sum = 0, sum_sq = 0;
+    for (int i = 0; i < n; ++i) {
+      BsdfSample s = bsdf_sample(c.material, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng)));
+      double a = max_component(s.weight) * s.eta * s.eta;
+      sum += a;
+      sum_sq += a * a;
+    }
+    double mean = sum / n;
+    double sigma = std::sqrt(std::max(sum_sq / n - mean * mean, 0.0) / n);
+    EXPECT_LE(mean, 1.0 + 5.0 * sigma + 1e-5) << c.name << " cos " << cos_i;
+    uint transmits =
+        bsdf_flags(c.material, vec2(0.5f)) & (BSDF_DELTA_TRANSMISSION | BSDF_GLOSSY_TRANSMISSION);
+    bool lit = cos_i > 0.0f || (c.material.flags & MATERIAL_TWOSIDED) != 0u || transmits != 0u;
+    if (c.lossless && lit) {
+      EXPECT_NEAR(mean, 1.0, 5.0 * sigma + 1e-5) << c.name << " cos " << cos_i;
+    }
+  }
+}
+
+TEST_P(BsdfCase, ReflectionIsReciprocal) {
+  const Case& c = GetParam();
+  if (!c.reciprocal) GTEST_SKIP() << "not reciprocal in Mitsuba either";
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  for (int i = 0; i < 5000; ++i) {
+    vec3 a = square_to_cosine_hemisphere(vec2(uni(rng), uni(rng)));
+    vec3 b = square_to_cosine_hemisphere(vec2(uni(rng), uni(rng)));
+    if (a.z < 1e-3f || b.z < 1e-3f) continue;
+    vec3 fab = bsdf_eval(c.material, vec2(0.5f), a, b) / b.z;
+    vec3 fba = bsdf_eval(c.material, vec2(0.5f), b, a) / a.z;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(fab[k], fba[k], 1e-3f * std::max(1.0f, fab[k])) << c.name;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, BsdfCase, ::testing::ValuesIn(all_cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           std::string n = info.param.name;
+                           for (char& ch : n)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return n;
+                         });
+
+// ---- Extremes: no NaN, Inf or negative value anywhere on the grid of issue 3 -------------
+
+const float kAlphas[] = {1e-4f, 1e-3f, 0.01f, 0.1f, 0.5f, 1.0f};
+const float kEtas[] = {1.0f, 1.0001f, 1.33f, 1.5f, 2.42f, 4.0f, 1.0f / 1.5f};
+const float kExtremeCosines[] = {1.0f, 0.5f, 1e-2f, 1e-4f, 1e-6f, 0.0f, -1e-6f, -0.5f, -1.0f};
+
+std::vector<Material> extreme_materials() {
+  std::vector<Material> ms;
+  for (float r : {0.0f, 1.0f}) {
+    ms.push_back(diffuse(vec3(r)));
+    ms.push_back(conductor(vec3(r), vec3(r)));
+  }
+  ms.push_back(conductor(vec3(0.0f), vec3(1.0f)));
+  for (float eta : kEtas) {
+    ms.push_back(dielectric(eta));
+    Material zero = dielectric(eta);
+    zero.param[DIELECTRIC_SPECULAR_REFLECTANCE] = constant(0.0f);
+    zero.param[DIELECTRIC_SPECULAR_TRANSMITTANCE] = constant(0.0f);
+    ms.push_back(zero);
+  }
+  std::vector<Material> wrapped;
+  for (const Material& m : ms) {
+    Material t = m;
+    t.flags |= MATERIAL_TWOSIDED;
+    wrapped.push_back(t);
+    for (float alpha : {0.0f, 0.5f, 1.0f}) {
+      Material k = m;
+      k.flags |= MATERIAL_MASKED;
+      k.opacity = constant(alpha);
+      wrapped.push_back(k);
+    }
+  }
+  ms.insert(ms.end(), wrapped.begin(), wrapped.end());
+  return ms;
+}
+
+TEST(BsdfExtremes, NoNanInfOrNegative) {
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  for (const Material& m : extreme_materials()) {
+    for (float cos_i : kExtremeCosines) {
+      for (float cos_o : kExtremeCosines) {
+        vec3 wi = direction(cos_i, 0.4f);
+        vec3 wo = direction(cos_o, 0.4f + float(M_PI) * uni(rng));
+        vec3 f = bsdf_eval(m, vec2(0.5f), wi, wo);
+        float pdf = bsdf_pdf(m, vec2(0.5f), wi, wo);
+        ASSERT_TRUE(is_finite(f) && is_nonnegative(f)) << m.type << " " << cos_i << " " << cos_o;
+        ASSERT_TRUE(std::isfinite(pdf) && pdf >= 0.0f) << m.type << " " << cos_i << " " << cos_o;
+      }
+      for (int i = 0; i < 200; ++i) {
+        vec3 wi = direction(cos_i, 2.0f * float(M_PI) * uni(rng));
+        float u1 = i == 0 ? 0.0f : (i == 1 ? ONE_MINUS_EPSILON : uni(rng));
+        vec2 u2 =
+            i == 0 ? vec2(0.0f) : (i == 1 ? vec2(ONE_MINUS_EPSILON) : vec2(uni(rng), uni(rng)));
+        BsdfSample s = bsdf_sample(m, vec2(0.5f), wi, u1, u2);
+        ASSERT_TRUE(is_finite(s.weight) && is_nonnegative(s.weight)) << m.type << " " << cos_i;
+        ASSERT_TRUE(std::isfinite(s.pdf) && s.pdf >= 0.0f) << m.type << " " << cos_i;
+        ASSERT_TRUE(is_finite(s.wo) && std::isfinite(s.eta) && s.eta > 0.0f) << m.type;
+      }
+    }
+  }
+}
+
+// ---- Known values ------------------------------------------------------------------------
+
+TEST(BsdfValues, DiffuseIsLambertian) {
+  Material m = diffuse(vec3(0.25f, 0.5f, 0.75f));
+  vec3 wi = direction(0.6f, 0.0f);
+  vec3 wo = direction(0.3f, 2.0f);
+  vec3 f = bsdf_eval(m, vec2(0.0f), wi, wo);
+  EXPECT_NEAR(f.y, 0.5f / float(M_PI) * 0.3f, 1e-6f);
+  EXPECT_NEAR(bsdf_pdf(m, vec2(0.0f), wi, wo), 0.3f / float(M_PI), 1e-6f);
+  EXPECT_EQ(bsdf_eval(m, vec2(0.0f), wi, direction(-0.3f, 2.0f)), vec3(0.0f));
+  EXPECT_EQ(bsdf_eval(m, vec2(0.0f), direction(-0.6f, 0.0f), wo), vec3(0.0f));
+  BsdfSample s = bsdf_sample(m, vec2(0.0f), wi, 0.5f, vec2(0.3f, 0.8f));
+  EXPECT_EQ(s.weight, vec3(0.25f, 0.5f, 0.75f));
+  EXPECT_EQ(s.lobe, BSDF_DIFFUSE_REFLECTION);
+}
+
+TEST(BsdfValues, TwosidedDiffuseFromBelow) {
+  Material m = diffuse(vec3(0.5f));
+  m.flags |= MATERIAL_TWOSIDED;
+  vec3 wi = direction(-0.6f, 0.0f);
+  vec3 wo = direction(-0.3f, 2.0f);
+  EXPECT_NEAR(bsdf_eval(m, vec2(0.0f), wi, wo).x, 0.5f / float(M_PI) * 0.3f, 1e-6f);
+  EXPECT_EQ(bsdf_eval(m, vec2(0.0f), wi, direction(0.3f, 2.0f)), vec3(0.0f));
+  BsdfSample s = bsdf_sample(m, vec2(0.0f), wi, 0.5f, vec2(0.3f, 0.8f));
+  EXPECT_LT(s.wo.z, 0.0f);
+  EXPECT_EQ(s.weight, vec3(0.5f));
+}
+
+TEST(BsdfValues, ConductorMirror) {
+  Material m = conductor(vec3(0.0f), vec3(1.0f));
+  vec3 wi = direction(0.3f, 1.0f);
+  BsdfSample s = bsdf_sample(m, vec2(0.0f), wi, 0.5f, vec2(0.5f));
+  EXPECT_EQ(s.lobe, BSDF_DELTA_REFLECTION);
+  EXPECT_NEAR(distance(s.wo, vec3(-wi.x, -wi.y, wi.z)), 0.0f, 1e-7f);
+  EXPECT_NEAR(s.weight.x, 1.0f, 1e-6f);
+  EXPECT_EQ(bsdf_eval(m, vec2(0.0f), wi, s.wo), vec3(0.0f));
+  EXPECT_EQ(bsdf_pdf(m, vec2(0.0f), wi, s.wo), 0.0f);
+  EXPECT_EQ(bsdf_sample(m, vec2(0.0f), direction(-0.3f, 1.0f), 0.5f, vec2(0.5f)).pdf, 0.0f);
+}
+
+TEST(BsdfValues, DielectricChoosesByFresnel) {
+  Material m = dielectric(1.5f);
+  vec3 wi = direction(1.0f, 0.0f);
+  BsdfSample r = bsdf_sample(m, vec2(0.0f), wi, 0.01f, vec2(0.5f));
+  EXPECT_EQ(r.lobe, BSDF_DELTA_REFLECTION);
+  EXPECT_NEAR(r.pdf, 0.04f, 1e-6f);
+  EXPECT_EQ(r.weight, vec3(1.0f));
+  BsdfSample t = bsdf_sample(m, vec2(0.0f), wi, 0.5f, vec2(0.5f));
+  EXPECT_EQ(t.lobe, BSDF_DELTA_TRANSMISSION);
+  EXPECT_NEAR(t.pdf, 0.96f, 1e-6f);
+  EXPECT_NEAR(t.weight.x, 1.0f / 2.25f, 1e-6f);  // radiance scaled by (n_i / n_t)^2
+  EXPECT_FLOAT_EQ(t.eta, 1.5f);
+  EXPECT_NEAR(t.wo.z, -1.0f, 1e-6f);
+  // Total internal reflection from inside beyond the critical angle.
+  BsdfSample tir = bsdf_sample(m, vec2(0.0f), direction(-0.5f, 0.0f), 0.999f, vec2(0.5f));
+  EXPECT_EQ(tir.lobe, BSDF_DELTA_REFLECTION);
+  EXPECT_EQ(tir.weight, vec3(1.0f));
+  EXPECT_LT(tir.wo.z, 0.0f);
+}
+
+TEST(BsdfValues, MaskPassesThrough) {
+  Material m = diffuse(vec3(0.5f));
+  m.flags |= MATERIAL_MASKED;
+  m.opacity = constant(0.25f);
+  vec3 wi = direction(0.6f, 0.0f);
+  vec3 wo = direction(0.3f, 2.0f);
+  EXPECT_NEAR(bsdf_eval(m, vec2(0.0f), wi, wo).x, 0.25f * 0.5f / float(M_PI) * 0.3f, 1e-7f);
+  EXPECT_NEAR(bsdf_pdf(m, vec2(0.0f), wi, wo), 0.25f * 0.3f / float(M_PI), 1e-7f);
+  BsdfSample null = bsdf_sample(m, vec2(0.0f), wi, 0.5f, vec2(0.5f));
+  EXPECT_EQ(null.lobe, BSDF_NULL);
+  EXPECT_EQ(null.wo, -wi);
+  EXPECT_EQ(null.weight, vec3(1.0f));
+  EXPECT_NEAR(null.pdf, 0.75f, 1e-7f);
+  EXPECT_TRUE((bsdf_flags(m, vec2(0.0f)) & BSDF_NULL) != 0u);
+  BsdfSample nested = bsdf_sample(m, vec2(0.0f), wi, 0.1f, vec2(0.5f));
+  EXPECT_EQ(nested.lobe, BSDF_DIFFUSE_REFLECTION);
+  EXPECT_EQ(nested.weight, vec3(0.5f));
+}
+
+}  // namespace
+}  // namespace tr

@@ -1,0 +1,85 @@
+#include "bsdf_test_support.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/scene_access.h"
+
+namespace tr {
+
+namespace test {
+
+TestScene& test_scene() {
+  static TestScene scene;
+  return scene;
+}
+
+TexturedValue constant(vec3 v) {
+  TexturedValue t;
+  t.value = v;
+  t.texture = NO_INDEX;
+  return t;
+}
+
+TexturedValue constant(float v) { return constant(vec3(v)); }
+
+Material make_material(uint type) {
+  Material m{};
+  m.type = type;
+  m.flags = 0u;
+  m.eta = 1.0f;
+  m.extra = 0.0f;
+  m.opacity = constant(1.0f);
+  for (uint i = 0; i < MATERIAL_PARAM_COUNT; ++i) m.param[i] = constant(0.0f);
+  return m;
+}
+
+vec3 direction(float cos_theta, float phi) {
+  float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+  return vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
+}
+
+Material diffuse(vec3 reflectance) {
+  Material m = make_material(BSDF_DIFFUSE);
+  m.param[DIFFUSE_REFLECTANCE] = constant(reflectance);
+  return m;
+}
+
+Material conductor(vec3 eta, vec3 k) {
+  Material m = make_material(BSDF_CONDUCTOR);
+  m.param[CONDUCTOR_ETA] = constant(eta);
+  m.param[CONDUCTOR_K] = constant(k);
+  m.param[CONDUCTOR_SPECULAR_REFLECTANCE] = constant(1.0f);
+  return m;
+}
+
+Material dielectric(float eta) {
+  Material m = make_material(BSDF_DIELECTRIC);
+  m.eta = eta;
+  m.param[DIELECTRIC_SPECULAR_REFLECTANCE] = constant(1.0f);
+  m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE] = constant(1.0f);
+  return m;
+}
+
+}  // namespace test
+
+// The BSDFs read materials and textures only; any other access is a test bug.
+[[noreturn]] static void not_in_bsdf_tests(const char* what) {
+  throw std::logic_error(std::string(what) + " is not available in the BSDF unit tests");
+}
+
+SceneGlobals scene_globals() { not_in_bsdf_tests("scene_globals"); }
+Material scene_material(uint index) { return test::test_scene().materials.at(index); }
+Texture scene_texture(uint index) { return test::test_scene().textures.at(index); }
+vec4 scene_texel(uint index) { return test::test_scene().texels.at(index); }
+Emitter scene_emitter(uint) { not_in_bsdf_tests("scene_emitter"); }
+AliasEntry scene_alias(uint) { not_in_bsdf_tests("scene_alias"); }
+Shape scene_shape(uint) { not_in_bsdf_tests("scene_shape"); }
+Instance scene_instance(uint) { not_in_bsdf_tests("scene_instance"); }
+vec3 scene_position(uint) { not_in_bsdf_tests("scene_position"); }
+vec3 scene_normal(uint) { not_in_bsdf_tests("scene_normal"); }
+vec2 scene_uv(uint) { not_in_bsdf_tests("scene_uv"); }
+uint scene_index(uint) { not_in_bsdf_tests("scene_index"); }
+
+}  // namespace tr

@@ -1,0 +1,32 @@
+// Scene data behind core/scene_access.h for the BSDF unit tests, and helpers to build
+// materials and directions.
+#pragma once
+
+#include <vector>
+
+#include "core/bsdf.h"
+#include "core/scene_types.h"
+
+namespace tr::test {
+
+// Backing store of the scene_* accessors; tests fill what they use.
+struct TestScene {
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<vec4> texels;
+};
+TestScene& test_scene();
+
+TexturedValue constant(vec3 v);
+TexturedValue constant(float v);
+Material make_material(uint type);  // every parameter constant 0, eta 1
+
+// Unit direction with cos(theta) = cos_theta at azimuth phi.
+vec3 direction(float cos_theta, float phi);
+
+// Mitsuba defaults of each plugin (parameters the plugin docs list, constant values).
+Material diffuse(vec3 reflectance);
+Material conductor(vec3 eta, vec3 k);
+Material dielectric(float eta);
+
+}  // namespace tr::test
