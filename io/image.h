@@ -1,0 +1,49 @@
+// Image files: read any format OpenImageIO reads, write float EXR and 8-bit sRGB PNG.
+// Writes are atomic: the image goes to a temporary file in the destination's directory which
+// is then renamed over the destination, so a reader sees the old file or the new one, never a
+// partial one, and a failed write leaves the old file untouched.
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tr {
+
+// Thrown by every function here; what() is one line, "path: what went wrong".
+struct ImageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Image {
+  int width = 0, height = 0, channels = 0;
+  // Row-major, top row first, channels interleaved; linear values (8-bit sRGB-encoded inputs
+  // such as PNG and JPEG are decoded to linear when read; alpha is left as stored).
+  std::vector<float> pixels;
+  // String attributes of the file (EXR header attributes, PNG text chunks, ...).
+  std::map<std::string, std::string> metadata;
+  // One name per channel ("R", "G", "B", "A", "Y", ...); empty means the defaults of
+  // default_channel_names().
+  std::vector<std::string> channel_names;
+
+  float& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
+};
+
+// "Y" for 1 channel, "Y","A" for 2, "R","G","B" for 3, "R","G","B","A" for 4, "C0".. beyond.
+std::vector<std::string> default_channel_names(int channels);
+
+Image read_image(const std::string& path);
+
+// 32-bit float EXR (ZIP compression); metadata entries become string attributes.
+void write_exr(const std::string& path, const Image& img);
+
+// 8-bit PNG: colour channels clamped to [0, 1] and sRGB-encoded (IEC 61966-2-1), alpha
+// clamped and stored linearly; 1 to 4 channels. Metadata entries become text chunks.
+void write_png_srgb(const std::string& path, const Image& img);
+
+// Throws ImageError unless img has width*height*channels pixels and positive dimensions.
+void check_image_shape(const std::string& path, const Image& img);
+
+}  // namespace tr
