@@ -21,6 +21,7 @@
 #include "core/bsdf/conductor.h"
 #include "core/bsdf/dielectric.h"
 #include "core/bsdf/diffuse.h"
+#include "core/bsdf/roughconductor.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -30,6 +31,8 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
       return diffuse_flags(m, uv);
     case BSDF_CONDUCTOR:
       return conductor_flags(m, uv);
+    case BSDF_ROUGHCONDUCTOR:
+      return roughconductor_flags(m, uv);
     case BSDF_DIELECTRIC:
       return dielectric_flags(m, uv);
     default:
@@ -41,6 +44,8 @@ INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       return diffuse_eval(m, uv, wi, wo);
+    case BSDF_ROUGHCONDUCTOR:
+      return roughconductor_eval(m, uv, wi, wo);
     default:
       return vec3(0.0f);
   }
@@ -50,6 +55,8 @@ INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       return diffuse_pdf(m, uv, wi, wo);
+    case BSDF_ROUGHCONDUCTOR:
+      return roughconductor_pdf(m, uv, wi, wo);
     default:
       return 0.0f;
   }
@@ -61,6 +68,8 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       return diffuse_sample(m, uv, wi, u1, u2);
     case BSDF_CONDUCTOR:
       return conductor_sample(m, uv, wi, u1, u2);
+    case BSDF_ROUGHCONDUCTOR:
+      return roughconductor_sample(m, uv, wi, u1, u2);
     case BSDF_DIELECTRIC:
       return dielectric_sample(m, uv, wi, u1, u2);
     default:

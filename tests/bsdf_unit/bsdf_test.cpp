@@ -24,6 +24,8 @@ struct Case {
   bool lossless;    // reflectances 1: the albedo (in power) is 1 up to the model's own loss
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::vector<Case> all_cases() {
   std::vector<Case> cases;
   cases.push_back({"diffuse", diffuse(vec3(0.2f, 0.5f, 0.8f)), true, false});
@@ -35,6 +37,22 @@ std::vector<Case> all_cases() {
   cases.push_back({"dielectric_1.5", dielectric(1.5f), true, true});
   cases.push_back({"dielectric_inv1.5", dielectric(1.0f / 1.5f), true, true});
   cases.push_back({"dielectric_1.0001", dielectric(1.0001f), true, true});
+  const uint kBeckmann = MATERIAL_BECKMANN;
+  const uint kVisible = MATERIAL_SAMPLE_VISIBLE;
+  const vec3 kGoldEta(0.143f, 0.374f, 1.442f);
+  const vec3 kGoldK(3.983f, 2.385f, 1.603f);
+  for (uint dist : {0u, kBeckmann}) {
+    std::string dn = dist ? "beckmann" : "ggx";
+    for (uint vis : {kVisible, 0u}) {
+      std::string vn = vis ? "_vis" : "_novis";
+      cases.push_back({"roughconductor_" + dn + vn + "_0.1",
+                       rough_conductor(dist | vis, 0.1f, 0.1f, kGoldEta, kGoldK), true, false});
+      cases.push_back({"roughconductor_" + dn + vn + "_0.5",
+                       rough_conductor(dist | vis, 0.5f, 0.5f, kGoldEta, kGoldK), true, false});
+      cases.push_back({"roughconductor_" + dn + vn + "_aniso",
+                       rough_conductor(dist | vis, 0.15f, 0.6f, kGoldEta, kGoldK), true, false});
+    }
+  }
   Material twosided = diffuse(vec3(0.7f));
   twosided.flags |= MATERIAL_TWOSIDED;
   cases.push_back({"twosided_diffuse", twosided, true, false});
@@ -199,6 +217,13 @@ std::vector<Material> extreme_materials() {
     ms.push_back(conductor(vec3(r), vec3(r)));
   }
   ms.push_back(conductor(vec3(0.0f), vec3(1.0f)));
+  for (uint flags : {0u, 4u, 8u, 12u}) {
+    for (float alpha : kAlphas) {
+      ms.push_back(rough_conductor(flags, alpha, alpha, vec3(0.0f), vec3(1.0f)));
+      ms.push_back(rough_conductor(flags, alpha, 0.3f, vec3(0.2f), vec3(3.0f)));
+      ms.push_back(rough_conductor(flags, alpha, alpha, vec3(0.0f), vec3(0.0f)));
+    }
+  }
   for (float eta : kEtas) {
     ms.push_back(dielectric(eta));
     Material zero = dielectric(eta);

@@ -62,6 +62,15 @@ Material dielectric(float eta) {
   return m;
 }
 
+Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec3 k) {
+  Material m = conductor(eta, k);
+  m.type = BSDF_ROUGHCONDUCTOR;
+  m.flags = flags;
+  m.param[CONDUCTOR_ALPHA_U] = constant(alpha_u);
+  m.param[CONDUCTOR_ALPHA_V] = constant(alpha_v);
+  return m;
+}
+
 }  // namespace test
 
 // The BSDFs read materials and textures only; any other access is a test bug.

@@ -1,0 +1,58 @@
+// Mitsuba 3 `roughconductor` (src/bsdfs/roughconductor.cpp): Cook-Torrance microfacet
+// reflection lit from the front side,
+//   f(wi, wo) = F(wi.h) D(h) G1(wi, h) G1(wo, h) / (4 cos_i cos_o),   h = (wi + wo) / |wi + wo|
+// (Walter et al. 2007, eq. 20), F the exact conductor Fresnel term, sampled through the
+// microfacet normal with the reflection Jacobian dh/dwo = 1 / (4 |wo.h|) (Walter et al. eq. 14).
+#ifndef TWINRAY_CORE_BSDF_ROUGHCONDUCTOR_H
+#define TWINRAY_CORE_BSDF_ROUGHCONDUCTOR_H
+
+#include "core/bsdf/common.h"
+#include "core/fresnel.h"
+#include "core/material_slots.h"
+#include "core/microfacet.h"
+
+TR_NAMESPACE_BEGIN
+
+INLINE uint roughconductor_flags(Material m, vec2 uv) { return BSDF_GLOSSY_REFLECTION; }
+
+INLINE Microfacet roughconductor_distribution(Material m, vec2 uv) {
+  return microfacet_make(
+      (m.flags & MATERIAL_BECKMANN) != 0u, eval_textured_1(m.param[CONDUCTOR_ALPHA_U], uv),
+      eval_textured_1(m.param[CONDUCTOR_ALPHA_V], uv), (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
+}
+
+INLINE vec3 roughconductor_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
+  Microfacet d = roughconductor_distribution(m, uv);
+  vec3 h = normalize(wi + wo);
+  float D = microfacet_d(d, h);
+  if (D == 0.0f) return vec3(0.0f);
+  float G = microfacet_g(d, wi, wo, h);
+  vec3 F = fresnel_conductor(dot(wi, h), eval_textured(m.param[CONDUCTOR_ETA], uv),
+                             eval_textured(m.param[CONDUCTOR_K], uv));
+  // f cos_o = F D G / (4 cos_i).
+  return F * eval_textured(m.param[CONDUCTOR_SPECULAR_REFLECTANCE], uv) * (D * G / (4.0f * wi.z));
+}
+
+INLINE float roughconductor_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  vec3 h = normalize(wi + wo);
+  if (wi.z <= 0.0f || wo.z <= 0.0f || dot(wi, h) <= 0.0f || dot(wo, h) <= 0.0f) return 0.0f;
+  Microfacet d = roughconductor_distribution(m, uv);
+  // Density of h (microfacet_pdf) times dh/dwo = 1 / (4 wo.h); for visible normals
+  // G1 D (wi.h) / cos_i / (4 wo.h) = G1 D / (4 cos_i) since wi.h = wo.h.
+  if (d.sample_visible) return microfacet_d(d, h) * microfacet_smith_g1(d, wi, h) / (4.0f * wi.z);
+  return microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
+}
+
+INLINE BsdfSample roughconductor_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  if (wi.z <= 0.0f) return bsdf_sample_failed();
+  vec3 h = microfacet_sample(roughconductor_distribution(m, uv), wi, u2);
+  vec3 wo = reflect_about(wi, h);
+  if (!(wo.z > 0.0f)) return bsdf_sample_failed();
+  return bsdf_sample_smooth(wo, roughconductor_pdf(m, uv, wi, wo),
+                            roughconductor_eval(m, uv, wi, wo), 1.0f, BSDF_GLOSSY_REFLECTION);
+}
+
+TR_NAMESPACE_END
+
+#endif
