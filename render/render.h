@@ -3,12 +3,18 @@
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace tr {
 
 struct Scene;
+
+// The requested backend or device cannot render here; what() says what is missing.
+struct BackendUnavailable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Called with (samples done, samples total) as the render progresses; may be empty.
 using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;

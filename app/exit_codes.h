@@ -1,0 +1,16 @@
+// Exit statuses of the twinray command line (documented in README.md and `twinray --help`).
+#pragma once
+
+namespace tr {
+
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitFailed = 1,          // a check failed (compare/validate verdict: fail)
+  kExitUsage = 2,           // bad command-line arguments
+  kExitBadScene = 3,        // the scene file (or a file it names) is invalid
+  kExitNoBackend = 4,       // the requested backend/device is unavailable
+  kExitOutput = 5,          // an output file could not be written
+  kExitInternal = 6,        // an unexpected internal error
+};
+
+}  // namespace tr

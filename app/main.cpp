@@ -1,0 +1,46 @@
+// twinray: the command line. Verbs: render, devices, compare.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "app/exit_codes.h"
+#include "app/render_command.h"
+#ifdef TWINRAY_HAS_GPU
+#include "gpu_backend/render_gpu.h"
+#endif
+#ifdef TWINRAY_HAS_COMPARE
+#include "validation/image/compare_command.h"
+#endif
+
+namespace {
+
+const char* kUsage =
+    "usage: twinray <verb> [arguments]\n"
+    "  render SCENE.xml [options]   render a Mitsuba 3 XML scene (twinray render --help)\n"
+    "  devices                      list Vulkan devices and whether the GPU backend can use them\n"
+    "  compare A.exr B.exr [opts]   compare two renders (twinray compare --help)\n"
+    "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
+    "             5 output not writable, 6 internal error\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? tr::kExitUsage : tr::kExitOk;
+  }
+  std::string verb = argv[1];
+  if (verb == "--version") {
+    std::printf("twinray %s\n", TWINRAY_VERSION);
+    return tr::kExitOk;
+  }
+  if (verb == "render") return tr::render_command(argc - 2, argv + 2);
+#ifdef TWINRAY_HAS_GPU
+  if (verb == "devices") return tr::devices_command(argc - 2, argv + 2);
+#endif
+#ifdef TWINRAY_HAS_COMPARE
+  if (verb == "compare") return tr::compare_command(argc - 2, argv + 2);
+#endif
+  std::fprintf(stderr, "twinray: unknown verb '%s'\n%s", verb.c_str(), kUsage);
+  return tr::kExitUsage;
+}

@@ -1,0 +1,26 @@
+// core/scene_access.h over the host vectors of the bound SceneBuffers.
+#include "core/scene_access.h"
+
+#include "cpu_backend/bound_scene.h"
+
+namespace tr {
+namespace {
+const SceneBuffers* g_buffers = nullptr;
+}
+
+void bind_scene_buffers(const SceneBuffers* buffers) { g_buffers = buffers; }
+
+SceneGlobals scene_globals() { return g_buffers->globals; }
+Material scene_material(uint i) { return g_buffers->materials[i]; }
+Texture scene_texture(uint i) { return g_buffers->textures[i]; }
+vec4 scene_texel(uint i) { return g_buffers->texels[i]; }
+Emitter scene_emitter(uint i) { return g_buffers->emitters[i]; }
+AliasEntry scene_alias(uint i) { return g_buffers->alias[i]; }
+Shape scene_shape(uint i) { return g_buffers->shapes[i]; }
+Instance scene_instance(uint i) { return g_buffers->instances[i]; }
+vec3 scene_position(uint v) { return vec3(g_buffers->positions[v]); }
+vec3 scene_normal(uint v) { return vec3(g_buffers->normals[v]); }
+vec2 scene_uv(uint v) { return g_buffers->uvs[v]; }
+uint scene_index(uint i) { return g_buffers->indices[i]; }
+
+}  // namespace tr

@@ -1,0 +1,26 @@
+// Writes a render's outputs: OUT.exr (mean, float32 RGB, with metadata), OUT_var.exr (the
+// per-sample variance, Mitsuba `moment` semantics, same naming as Mitsuba's test
+// references) and OUT.png (sRGB preview). Each file is written atomically: a reader sees the
+// old file or the complete new one, never a partial one.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "render/render.h"
+
+namespace tr {
+
+struct OutputPaths {
+  std::string image;     // OUT.exr
+  std::string variance;  // OUT_var.exr
+  std::string preview;   // OUT.png
+};
+
+OutputPaths output_paths(const std::string& exr_path);
+
+// Metadata written as EXR attributes: spp, seed, backend, device, time, version, plus `extra`.
+void write_result(const RenderResult& result, const OutputPaths& paths,
+                  const std::map<std::string, std::string>& extra);
+
+}  // namespace tr
