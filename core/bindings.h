@@ -18,6 +18,7 @@
 #define BINDING_UVS 11
 #define BINDING_INDICES 12
 #define BINDING_ACCUMULATION 13
-#define BINDING_COUNT 14
+#define BINDING_GEOMETRY_SHAPES 14  // gpu_backend/scene_accel.h: TLAS geometry -> shape
+#define BINDING_COUNT 15
 
 #endif

@@ -1,0 +1,27 @@
+// The Vulkan ray-tracing backend's entry points.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "render/render.h"
+#include "scenes/scene.h"
+
+namespace tr {
+
+// Renders `scene` with the core's path integrator in ray-tracing shaders. Throws GpuError
+// (one line) when no usable device exists, naming what is missing and suggesting
+// --backend cpu, and when the Vulkan validation layer (TWINRAY_VK_VALIDATION=1) reports an
+// error.
+RenderResult render_gpu(const Scene& scene, const RenderOptions& options);
+
+// render_gpu with another ray-generation shader writing the same PixelBatch records
+// (shaders/batch.h); tests probe traversal with it.
+RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options,
+                                const uint32_t* raygen, size_t raygen_bytes);
+
+// `twinray devices`: lists every Vulkan device, whether it is usable and, if not, what it
+// lacks. argv[0] is the command's own name. Returns 0 when at least one device is usable.
+int devices_command(int argc, char** argv);
+
+}  // namespace tr

@@ -1,0 +1,202 @@
+#include "gpu_backend/rt_pipeline.h"
+
+#include <cstring>
+#include <vector>
+
+#include "core/bindings.h"
+#include "gpu_backend/gpu_error.h"
+#include "shaders/batch.h"
+#include "spirv/hit.h"
+#include "spirv/miss.h"
+#include "spirv/shadow.h"
+#include "spirv/shape.h"
+
+namespace tr {
+
+namespace {
+
+const uint32_t kGroupCount = 5;
+const uint32_t kMissCount = 2;
+const uint32_t kHitGroupCount = 2;
+
+VkDeviceSize align_up(VkDeviceSize x, VkDeviceSize a) { return (x + a - 1) / a * a; }
+
+VkShaderModule make_module(VkDevice device, const uint32_t* code, size_t bytes) {
+  VkShaderModuleCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  info.codeSize = bytes;
+  info.pCode = code;
+  VkShaderModule module;
+  vk_check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
+  return module;
+}
+
+VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type, uint32_t general,
+                                           uint32_t closest, uint32_t intersection) {
+  VkRayTracingShaderGroupCreateInfoKHR g{};
+  g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
+  g.type = type;
+  g.generalShader = general;
+  g.closestHitShader = closest;
+  g.anyHitShader = VK_SHADER_UNUSED_KHR;
+  g.intersectionShader = intersection;
+  return g;
+}
+
+}  // namespace
+
+RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen,
+                                       size_t raygen_bytes)
+    : device_(device) {
+  VkDevice d = device.handle();
+  std::vector<VkShaderModule> modules;
+  try {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (uint32_t b = 0; b < BINDING_COUNT; ++b) {
+      VkDescriptorSetLayoutBinding binding{};
+      binding.binding = b;
+      binding.descriptorCount = 1;
+      binding.descriptorType = b == BINDING_TLAS ? VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
+                                                 : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      binding.stageFlags = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+                           VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR;
+      bindings.push_back(binding);
+    }
+    VkDescriptorSetLayoutCreateInfo set_info{};
+    set_info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+    set_info.bindingCount = static_cast<uint32_t>(bindings.size());
+    set_info.pBindings = bindings.data();
+    vk_check(vkCreateDescriptorSetLayout(d, &set_info, nullptr, &set_layout_),
+             "vkCreateDescriptorSetLayout");
+
+    VkPushConstantRange push{};
+    push.stageFlags = VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    push.size = sizeof(BatchParams);
+    VkPipelineLayoutCreateInfo layout_info{};
+    layout_info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set_layout_;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    vk_check(vkCreatePipelineLayout(d, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout");
+
+    struct Stage {
+      VkShaderStageFlagBits stage;
+      const uint32_t* code;
+      size_t bytes;
+    };
+    const Stage stages[] = {
+        {VK_SHADER_STAGE_RAYGEN_BIT_KHR, raygen, raygen_bytes},
+        {VK_SHADER_STAGE_MISS_BIT_KHR, spirv_miss, sizeof(spirv_miss)},
+        {VK_SHADER_STAGE_MISS_BIT_KHR, spirv_shadow, sizeof(spirv_shadow)},
+        {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, spirv_hit, sizeof(spirv_hit)},
+        {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, spirv_shape, sizeof(spirv_shape)},
+    };
+    std::vector<VkPipelineShaderStageCreateInfo> stage_infos;
+    for (const Stage& s : stages) {
+      modules.push_back(make_module(d, s.code, s.bytes));
+      VkPipelineShaderStageCreateInfo info{};
+      info.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+      info.stage = s.stage;
+      info.module = modules.back();
+      info.pName = "main";
+      stage_infos.push_back(info);
+    }
+    const uint32_t U = VK_SHADER_UNUSED_KHR;
+    const VkRayTracingShaderGroupCreateInfoKHR groups[kGroupCount] = {
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, U, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, U, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 2, U, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, 3, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, 3, 4),
+    };
+    VkRayTracingPipelineCreateInfoKHR info{};
+    info.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;
+    info.stageCount = static_cast<uint32_t>(stage_infos.size());
+    info.pStages = stage_infos.data();
+    info.groupCount = kGroupCount;
+    info.pGroups = groups;
+    info.maxPipelineRayRecursionDepth = 1;
+    info.layout = layout_;
+    vk_check(device.rt().create_ray_tracing_pipelines(d, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info,
+                                                      nullptr, &pipeline_),
+             "vkCreateRayTracingPipelinesKHR");
+    for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
+    modules.clear();
+    build_sbt();
+  } catch (...) {
+    for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
+    destroy();
+    throw;
+  }
+}
+
+// Shader binding table (Vulkan spec §40.1 "Shader Binding Table"): each region starts at a
+// multiple of shaderGroupBaseAlignment, records are handles padded to
+// shaderGroupHandleAlignment, and the raygen region's size equals its stride.
+void RayTracingPipeline::build_sbt() {
+  const auto& props = device_.rt_properties();
+  const VkDeviceSize handle = props.shaderGroupHandleSize;
+  const VkDeviceSize record = align_up(handle, props.shaderGroupHandleAlignment);
+  const VkDeviceSize base = props.shaderGroupBaseAlignment;
+  raygen_.stride = align_up(record, base);
+  raygen_.size = raygen_.stride;
+  miss_.stride = record;
+  miss_.size = align_up(kMissCount * record, base);
+  hit_.stride = record;
+  hit_.size = align_up(kHitGroupCount * record, base);
+
+  std::vector<uint8_t> handles(kGroupCount * handle);
+  vk_check(device_.rt().get_shader_group_handles(device_.handle(), pipeline_, 0, kGroupCount,
+                                                 handles.size(), handles.data()),
+           "vkGetRayTracingShaderGroupHandlesKHR");
+  const VkDeviceSize total = raygen_.size + miss_.size + hit_.size;
+  std::vector<uint8_t> table(total, 0);
+  auto put = [&](uint32_t group_index, VkDeviceSize offset) {
+    std::memcpy(table.data() + offset, handles.data() + group_index * handle, handle);
+  };
+  put(0, 0);
+  for (uint32_t i = 0; i < kMissCount; ++i) put(1 + i, raygen_.size + i * record);
+  for (uint32_t i = 0; i < kHitGroupCount; ++i)
+    put(1 + kMissCount + i, raygen_.size + miss_.size + i * record);
+
+  // The table's own start must be base-aligned too: over-allocate and offset.
+  std::vector<uint8_t> padded(total + base, 0);
+  Buffer sbt(device_, total + base,
+             VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR |
+                 VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  VkDeviceSize shift = align_up(sbt.address(), base) - sbt.address();
+  std::memcpy(padded.data() + shift, table.data(), total);
+  Buffer staging(device_, padded.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  std::memcpy(staging.mapped(), padded.data(), padded.size());
+  device_.submit_and_wait([&](VkCommandBuffer cmd) {
+    VkBufferCopy region{0, 0, padded.size()};
+    vkCmdCopyBuffer(cmd, staging.handle(), sbt.handle(), 1, &region);
+  });
+  sbt_ = std::move(sbt);
+  VkDeviceAddress start = sbt_.address() + shift;
+  raygen_.deviceAddress = start;
+  miss_.deviceAddress = start + raygen_.size;
+  hit_.deviceAddress = start + raygen_.size + miss_.size;
+}
+
+void RayTracingPipeline::trace(VkCommandBuffer cmd, uint32_t width, uint32_t height) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_);
+  device_.rt().cmd_trace_rays(cmd, &raygen_, &miss_, &hit_, &callable_, width, height, 1);
+}
+
+RayTracingPipeline::~RayTracingPipeline() { destroy(); }
+
+void RayTracingPipeline::destroy() {
+  VkDevice d = device_.handle();
+  if (pipeline_) vkDestroyPipeline(d, pipeline_, nullptr);
+  if (layout_) vkDestroyPipelineLayout(d, layout_, nullptr);
+  if (set_layout_) vkDestroyDescriptorSetLayout(d, set_layout_, nullptr);
+  pipeline_ = VK_NULL_HANDLE;
+  layout_ = VK_NULL_HANDLE;
+  set_layout_ = VK_NULL_HANDLE;
+}
+
+}  // namespace tr

@@ -1,0 +1,40 @@
+// The ray-tracing pipeline and its shader binding table.
+//   groups: 0 raygen | 1 miss (closest query) | 2 miss (occlusion query)
+//           3 triangle hit group (closest hit) | 4 procedural hit group (intersection +
+//           closest hit), matching HIT_GROUP_TRIANGLES / HIT_GROUP_PROCEDURAL.
+// Set 0 holds the bindings of core/bindings.h; the push constants are a BatchParams.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "gpu_backend/vk_device.h"
+
+namespace tr {
+
+class RayTracingPipeline {
+ public:
+  // raygen: SPIR-V of the ray-generation shader (shaders/raygen.rgen for renders).
+  RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen, size_t raygen_bytes);
+  ~RayTracingPipeline();
+  RayTracingPipeline(const RayTracingPipeline&) = delete;
+  RayTracingPipeline& operator=(const RayTracingPipeline&) = delete;
+
+  VkDescriptorSetLayout set_layout() const { return set_layout_; }
+  VkPipelineLayout layout() const { return layout_; }
+  VkPipeline pipeline() const { return pipeline_; }
+
+  // vkCmdBindPipeline + vkCmdTraceRaysKHR over width x height.
+  void trace(VkCommandBuffer cmd, uint32_t width, uint32_t height) const;
+
+ private:
+  void destroy();
+  void build_sbt();
+  VulkanDevice& device_;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  Buffer sbt_;
+  VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
+};
+
+}  // namespace tr

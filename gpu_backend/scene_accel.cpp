@@ -1,0 +1,255 @@
+#include "gpu_backend/scene_accel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "core/transform.h"
+#include "gpu_backend/gpu_error.h"
+
+namespace tr {
+
+namespace {
+
+const VkBufferUsageFlags kBuildInput =
+    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+
+VkDeviceSize align_up(VkDeviceSize x, VkDeviceSize a) { return (x + a - 1) / a * a; }
+
+}  // namespace
+
+GeometryLayout geometry_layout(const SceneBuffers& scene) {
+  GeometryLayout layout;
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const Instance& inst = scene.instances[i];
+    GeometryLayout::Entry meshes{i, false, {}};
+    GeometryLayout::Entry analytic{i, true, {}};
+    for (uint32_t s = inst.first_shape; s < inst.first_shape + inst.shape_count; ++s) {
+      const Shape& shape = scene.shapes.at(s);
+      if (shape.type == SHAPE_MESH) {
+        if (shape.triangle_count > 0) meshes.shapes.push_back(s);
+      } else {
+        analytic.shapes.push_back(s);
+      }
+    }
+    if (!meshes.shapes.empty()) layout.blases.push_back(meshes);
+    if (!analytic.shapes.empty()) layout.blases.push_back(analytic);
+  }
+  layout.table.resize(layout.blases.size());
+  for (size_t b = 0; b < layout.blases.size(); ++b) {
+    layout.table[b] = static_cast<uint32_t>(layout.table.size());
+    layout.table.insert(layout.table.end(), layout.blases[b].shapes.begin(),
+                        layout.blases[b].shapes.end());
+  }
+  return layout;
+}
+
+VkAabbPositionsKHR shape_bounds(const Shape& shape) {
+  // Object-space boxes: unit sphere, unit disk (z = 0), unit cylinder z in [0, 1].
+  vec3 lo(-1.0f, -1.0f, shape.type == SHAPE_SPHERE ? -1.0f : 0.0f);
+  vec3 hi(1.0f, 1.0f, shape.type == SHAPE_DISK ? 0.0f : 1.0f);
+  vec3 wlo(FLOAT_MAX), whi(-FLOAT_MAX);
+  for (int c = 0; c < 8; ++c) {
+    vec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    vec3 w = transform_point(shape.to_world[0], shape.to_world[1], shape.to_world[2], p);
+    wlo = min(wlo, w);
+    whi = max(whi, w);
+  }
+  // Conservative padding: the box only culls, the intersection shader decides.
+  vec3 pad = 1e-3f * (whi - wlo) + vec3(1e-4f * std::max(1.0f, max_component(abs(whi) + abs(wlo))));
+  wlo -= pad;
+  whi += pad;
+  return VkAabbPositionsKHR{wlo.x, wlo.y, wlo.z, whi.x, whi.y, whi.z};
+}
+
+AccelerationStructure::AccelerationStructure(VulkanDevice& device,
+                                             VkAccelerationStructureTypeKHR type, VkDeviceSize size)
+    : device_(device),
+      storage_(device, size,
+               VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
+                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) {
+  VkAccelerationStructureCreateInfoKHR info{};
+  info.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR;
+  info.buffer = storage_.handle();
+  info.size = size;
+  info.type = type;
+  vk_check(device.rt().create_acceleration_structure(device.handle(), &info, nullptr, &handle_),
+           "vkCreateAccelerationStructureKHR");
+  VkAccelerationStructureDeviceAddressInfoKHR address{};
+  address.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR;
+  address.accelerationStructure = handle_;
+  address_ = device.rt().get_acceleration_structure_address(device.handle(), &address);
+}
+
+AccelerationStructure::~AccelerationStructure() {
+  device_.rt().destroy_acceleration_structure(device_.handle(), handle_, nullptr);
+}
+
+namespace {
+
+// One pending build: geometries, ranges, and the structure and scratch it writes.
+struct Build {
+  std::vector<VkAccelerationStructureGeometryKHR> geometries;
+  std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges;
+  VkAccelerationStructureBuildGeometryInfoKHR info{};
+  VkDeviceSize scratch_offset = 0;
+};
+
+std::unique_ptr<AccelerationStructure> prepare(VulkanDevice& device, Build& build,
+                                               VkAccelerationStructureTypeKHR type,
+                                               VkDeviceSize& scratch_total) {
+  build.info.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR;
+  build.info.type = type;
+  build.info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  build.info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  build.info.geometryCount = static_cast<uint32_t>(build.geometries.size());
+  build.info.pGeometries = build.geometries.data();
+  std::vector<uint32_t> counts;
+  for (const auto& r : build.ranges) counts.push_back(r.primitiveCount);
+  VkAccelerationStructureBuildSizesInfoKHR sizes{};
+  sizes.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR;
+  device.rt().get_build_sizes(device.handle(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                              &build.info, counts.data(), &sizes);
+  auto as = std::make_unique<AccelerationStructure>(device, type, sizes.accelerationStructureSize);
+  build.info.dstAccelerationStructure = as->handle();
+  VkDeviceSize alignment = std::max<VkDeviceSize>(
+      device.as_properties().minAccelerationStructureScratchOffsetAlignment, 1);
+  build.scratch_offset = align_up(scratch_total, alignment);
+  scratch_total = build.scratch_offset + std::max<VkDeviceSize>(sizes.buildScratchSize, 1);
+  return as;
+}
+
+void record_builds(VulkanDevice& device, VkCommandBuffer cmd, std::vector<Build>& builds,
+                   const Buffer& scratch) {
+  if (builds.empty()) return;
+  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
+  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+  VkDeviceSize alignment = std::max<VkDeviceSize>(
+      device.as_properties().minAccelerationStructureScratchOffsetAlignment, 1);
+  VkDeviceAddress base = align_up(scratch.address(), alignment);
+  for (Build& b : builds) {
+    b.info.scratchData.deviceAddress = base + b.scratch_offset;
+    infos.push_back(b.info);
+    ranges.push_back(b.ranges.data());
+  }
+  device.rt().cmd_build_acceleration_structures(cmd, static_cast<uint32_t>(infos.size()),
+                                                infos.data(), ranges.data());
+}
+
+Buffer scratch_buffer(VulkanDevice& device, VkDeviceSize size) {
+  VkDeviceSize alignment = std::max<VkDeviceSize>(
+      device.as_properties().minAccelerationStructureScratchOffsetAlignment, 1);
+  return Buffer(device, size + alignment,
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+}
+
+}  // namespace
+
+SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
+                       const GeometryLayout& layout, const Buffer& positions,
+                       const Buffer& indices) {
+  std::vector<VkAabbPositionsKHR> aabbs;
+  for (const GeometryLayout::Entry& e : layout.blases)
+    if (e.procedural)
+      for (uint32_t s : e.shapes) aabbs.push_back(shape_bounds(scene.shapes[s]));
+  Buffer aabb_buffer =
+      upload_buffer(device, aabbs.data(), aabbs.size() * sizeof(VkAabbPositionsKHR), kBuildInput);
+
+  std::vector<Build> blas_builds(layout.blases.size());
+  VkDeviceSize scratch_size = 0;
+  size_t aabb_index = 0;
+  for (size_t b = 0; b < layout.blases.size(); ++b) {
+    const GeometryLayout::Entry& e = layout.blases[b];
+    Build& build = blas_builds[b];
+    for (uint32_t s : e.shapes) {
+      const Shape& shape = scene.shapes[s];
+      VkAccelerationStructureGeometryKHR g{};
+      g.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
+      g.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+      VkAccelerationStructureBuildRangeInfoKHR range{};
+      if (e.procedural) {
+        g.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+        g.geometry.aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+        g.geometry.aabbs.data.deviceAddress = aabb_buffer.address();
+        g.geometry.aabbs.stride = sizeof(VkAabbPositionsKHR);
+        range.primitiveCount = 1;
+        range.primitiveOffset = static_cast<uint32_t>(aabb_index++ * sizeof(VkAabbPositionsKHR));
+      } else {
+        g.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+        auto& tri = g.geometry.triangles;
+        tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+        tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+        tri.vertexData.deviceAddress = positions.address();
+        tri.vertexStride = sizeof(vec4);
+        tri.maxVertex = static_cast<uint32_t>(std::max<size_t>(scene.positions.size(), 1) - 1);
+        tri.indexType = VK_INDEX_TYPE_UINT32;
+        tri.indexData.deviceAddress = indices.address();
+        range.primitiveCount = shape.triangle_count;
+        range.primitiveOffset = shape.first_index * static_cast<uint32_t>(sizeof(uint32_t));
+        range.firstVertex = shape.first_vertex;
+        if (static_cast<size_t>(shape.first_index) + 3u * shape.triangle_count >
+                scene.indices.size() ||
+            static_cast<size_t>(shape.first_vertex) + shape.vertex_count > scene.positions.size())
+          throw GpuError("shape " + std::to_string(s) + " indexes past the scene's mesh buffers");
+      }
+      build.geometries.push_back(g);
+      build.ranges.push_back(range);
+    }
+    blases_.push_back(
+        prepare(device, build, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scratch_size));
+  }
+
+  std::vector<VkAccelerationStructureInstanceKHR> instances;
+  for (size_t b = 0; b < layout.blases.size(); ++b) {
+    const Instance& inst = scene.instances[layout.blases[b].instance];
+    VkAccelerationStructureInstanceKHR vi{};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) vi.transform.matrix[r][c] = inst.to_world[r][c];
+    vi.instanceCustomIndex = layout.blases[b].instance;
+    vi.mask = 0xff;
+    vi.instanceShaderBindingTableRecordOffset =
+        layout.blases[b].procedural ? HIT_GROUP_PROCEDURAL : HIT_GROUP_TRIANGLES;
+    vi.flags = VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
+    vi.accelerationStructureReference = blases_[b]->address();
+    instances.push_back(vi);
+  }
+  if (layout.blases.size() >= (1u << 24))
+    throw GpuError("too many instances for a Vulkan TLAS (24-bit custom index)");
+  Buffer instance_buffer =
+      upload_buffer(device, instances.data(),
+                    instances.size() * sizeof(VkAccelerationStructureInstanceKHR), kBuildInput);
+
+  std::vector<Build> tlas_build(1);
+  VkAccelerationStructureGeometryKHR g{};
+  g.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
+  g.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  g.geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  g.geometry.instances.data.deviceAddress = instance_buffer.address();
+  tlas_build[0].geometries.push_back(g);
+  VkAccelerationStructureBuildRangeInfoKHR range{};
+  range.primitiveCount = static_cast<uint32_t>(instances.size());
+  tlas_build[0].ranges.push_back(range);
+  VkDeviceSize tlas_scratch_size = 0;
+  tlas_ = prepare(device, tlas_build[0], VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                  tlas_scratch_size);
+
+  Buffer scratch = scratch_buffer(device, std::max(scratch_size, tlas_scratch_size));
+  device.submit_and_wait([&](VkCommandBuffer cmd) {
+    record_builds(device, cmd, blas_builds, scratch);
+    // The BLASes must be written before the TLAS build reads them and reuses the scratch.
+    VkMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+    barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                            VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                         VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+    record_builds(device, cmd, tlas_build, scratch);
+  });
+}
+
+}  // namespace tr

@@ -1,0 +1,29 @@
+// Records shared by the ray-generation shader and the host (gpu_backend/render_gpu.cpp):
+// the per-dispatch parameters (push constants) and the per-pixel result of one batch.
+#ifndef TWINRAY_SHADERS_BATCH_H
+#define TWINRAY_SHADERS_BATCH_H
+
+#include "core/prelude.h"
+
+TR_NAMESPACE_BEGIN
+
+struct BatchParams {
+  uint first_sample;  // global sample index of the batch's first sample
+  uint sample_count;  // samples per pixel in this batch
+  uint seed;
+  uint pad0;
+};
+
+// One pixel's batch: mean and sum of squared deviations M2 of the batch's samples (Welford
+// 1962, in float), the samples rejected as NaN/Inf (counted as zero radiance) and the rays
+// traced. The host merges batches in double (Chan, Golub & LeVeque 1979).
+struct PixelBatch {
+  vec3 mean;
+  uint rejected;
+  vec3 m2;
+  uint rays;
+};
+
+TR_NAMESPACE_END
+
+#endif
