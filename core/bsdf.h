@@ -22,6 +22,7 @@
 #include "core/bsdf/dielectric.h"
 #include "core/bsdf/diffuse.h"
 #include "core/bsdf/roughconductor.h"
+#include "core/bsdf/roughdielectric.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -33,6 +34,8 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
       return conductor_flags(m, uv);
     case BSDF_ROUGHCONDUCTOR:
       return roughconductor_flags(m, uv);
+    case BSDF_ROUGHDIELECTRIC:
+      return roughdielectric_flags(m, uv);
     case BSDF_DIELECTRIC:
       return dielectric_flags(m, uv);
     default:
@@ -46,6 +49,8 @@ INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
       return diffuse_eval(m, uv, wi, wo);
     case BSDF_ROUGHCONDUCTOR:
       return roughconductor_eval(m, uv, wi, wo);
+    case BSDF_ROUGHDIELECTRIC:
+      return roughdielectric_eval(m, uv, wi, wo);
     default:
       return vec3(0.0f);
   }
@@ -57,6 +62,8 @@ INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
       return diffuse_pdf(m, uv, wi, wo);
     case BSDF_ROUGHCONDUCTOR:
       return roughconductor_pdf(m, uv, wi, wo);
+    case BSDF_ROUGHDIELECTRIC:
+      return roughdielectric_pdf(m, uv, wi, wo);
     default:
       return 0.0f;
   }
@@ -70,6 +77,8 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       return conductor_sample(m, uv, wi, u1, u2);
     case BSDF_ROUGHCONDUCTOR:
       return roughconductor_sample(m, uv, wi, u1, u2);
+    case BSDF_ROUGHDIELECTRIC:
+      return roughdielectric_sample(m, uv, wi, u1, u2);
     case BSDF_DIELECTRIC:
       return dielectric_sample(m, uv, wi, u1, u2);
     default:

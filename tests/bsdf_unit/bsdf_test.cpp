@@ -51,6 +51,15 @@ std::vector<Case> all_cases() {
                        rough_conductor(dist | vis, 0.5f, 0.5f, kGoldEta, kGoldK), true, false});
       cases.push_back({"roughconductor_" + dn + vn + "_aniso",
                        rough_conductor(dist | vis, 0.15f, 0.6f, kGoldEta, kGoldK), true, false});
+      for (float eta : {1.5f, 1.0f / 1.33f}) {
+        std::string en = eta > 1.0f ? "_1.5" : "_inv1.33";
+        cases.push_back({"roughdielectric_" + dn + vn + en + "_0.1",
+                         rough_dielectric(dist | vis, 0.1f, 0.1f, eta), true, false});
+        cases.push_back({"roughdielectric_" + dn + vn + en + "_0.6",
+                         rough_dielectric(dist | vis, 0.6f, 0.6f, eta), true, false});
+        cases.push_back({"roughdielectric_" + dn + vn + en + "_aniso",
+                         rough_dielectric(dist | vis, 0.1f, 0.4f, eta), true, false});
+      }
     }
   }
   Material twosided = diffuse(vec3(0.7f));
@@ -222,6 +231,10 @@ std::vector<Material> extreme_materials() {
       ms.push_back(rough_conductor(flags, alpha, alpha, vec3(0.0f), vec3(1.0f)));
       ms.push_back(rough_conductor(flags, alpha, 0.3f, vec3(0.2f), vec3(3.0f)));
       ms.push_back(rough_conductor(flags, alpha, alpha, vec3(0.0f), vec3(0.0f)));
+      for (float eta : kEtas) {
+        ms.push_back(rough_dielectric(flags, alpha, alpha, eta));
+        ms.push_back(rough_dielectric(flags, alpha, 0.2f, eta));
+      }
     }
   }
   for (float eta : kEtas) {

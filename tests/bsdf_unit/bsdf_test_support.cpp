@@ -71,6 +71,15 @@ Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec
   return m;
 }
 
+Material rough_dielectric(uint flags, float alpha_u, float alpha_v, float eta) {
+  Material m = dielectric(eta);
+  m.type = BSDF_ROUGHDIELECTRIC;
+  m.flags = flags;
+  m.param[DIELECTRIC_ALPHA_U] = constant(alpha_u);
+  m.param[DIELECTRIC_ALPHA_V] = constant(alpha_v);
+  return m;
+}
+
 }  // namespace test
 
 // The BSDFs read materials and textures only; any other access is a test bug.

@@ -30,5 +30,6 @@ Material conductor(vec3 eta, vec3 k);
 Material dielectric(float eta);
 // Microfacet models: `flags` takes MATERIAL_BECKMANN / MATERIAL_SAMPLE_VISIBLE.
 Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec3 k);
+Material rough_dielectric(uint flags, float alpha_u, float alpha_v, float eta);
 
 }  // namespace tr::test
