@@ -9,7 +9,7 @@
 namespace tr {
 
 int devices_command(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
+  for (int i = 0; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
       std::cout << "usage: twinray devices\n"

@@ -21,7 +21,8 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
                                 const uint32_t* raygen, size_t raygen_bytes);
 
 // `twinray devices`: lists every Vulkan device, whether it is usable and, if not, what it
-// lacks. argv[0] is the command's own name. Returns 0 when at least one device is usable.
+// lacks. argv holds the arguments after `devices`. Returns 0 when at least one device is
+// usable.
 int devices_command(int argc, char** argv);
 
 }  // namespace tr

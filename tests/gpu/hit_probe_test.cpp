@@ -45,7 +45,7 @@ Expected reference_hit(const Ray& r) {
     e.t = td;
   }
   if (e.shape < 0) {
-    // Quad at z = 8; triangle 0 is (-20,-20), (20,-20), (20,20): below the diagonal y = x.
+    // Quad at z = 8; triangle 0 is (-20,-20), (20,20), (20,-20): below the diagonal y = x.
     double tq = (8.0 - oz) / dz;
     double qx = ox + tq * dx, qy = oy + tq * dy;
     if (std::abs(qx - qy) < margin) e.ambiguous = true;

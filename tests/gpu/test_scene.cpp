@@ -42,9 +42,25 @@ Scene probe_scene(uint width, uint height) {
   c.near_clip = 0.01f;
   c.far_clip = 1000.0f;
   b.globals.integrator.type = INTEGRATOR_PATH;
-  b.globals.integrator.max_depth = 1;
-  b.globals.environment = NO_INDEX;
+  b.globals.integrator.max_depth = 4;
+  b.globals.integrator.rr_depth = 5;
   b.globals.instance_count = 2;
+
+  Emitter sky{};
+  sky.type = EMITTER_CONSTANT;
+  sky.shape = NO_INDEX;
+  sky.texture = NO_INDEX;
+  sky.radiance = vec3(1.0f);
+  sky.scale = 1.0f;
+  set_rows(sky.to_world, vec3(1.0f), vec3(0.0f));
+  set_rows(sky.to_local, vec3(1.0f), vec3(0.0f));
+  b.emitters.push_back(sky);
+  b.alias.push_back(AliasEntry{1.0f, 0u, 1.0f, 0u});
+  b.globals.emitter_count = 1;
+  b.globals.emitter_alias_offset = 0;
+  b.globals.environment = 0;
+  b.globals.bounds_center = vec3(0.0f, 0.0f, 5.0f);
+  b.globals.bounds_radius = 30.0f;
 
   Material diffuse{};
   diffuse.type = BSDF_DIFFUSE;
@@ -70,10 +86,11 @@ Scene probe_scene(uint width, uint height) {
                  vec4(20.0f, 20.0f, 8.0f, 1.0f), vec4(-20.0f, 20.0f, 8.0f, 1.0f)};
   b.normals = {vec4(0.0f, 0.0f, -1.0f, 0.0f), vec4(0.0f, 0.0f, -1.0f, 0.0f),
                vec4(0.0f, 0.0f, -1.0f, 0.0f), vec4(0.0f, 0.0f, -1.0f, 0.0f)};
-  b.indices = {0, 1, 2, 0, 2, 3};
+  b.indices = {0, 2, 1, 0, 3, 2};  // wound so that the normal faces the camera (-z)
 
   b.shapes.push_back(analytic(SHAPE_DISK, vec3(0.5f), vec3(0.0f, 0.0f, 4.5f)));
   b.shapes[2].area = PI * 0.25f;
+  b.shapes[2].flags = SHAPE_FLIP_NORMALS;  // face the camera
 
   Instance top{};
   set_affine(top.to_world, top.to_object, vec3(1.0f), vec3(0.0f));
