@@ -1,0 +1,75 @@
+// Texture evaluation with Mitsuba 3's semantics (src/textures/bitmap.cpp, checkerboard.cpp,
+// and Dr.Jit's Texture lookup): uv passes through `to_uv`; a bitmap texel (i, j) covers
+// [i, i+1) x [j, j+1) in pos = uv * resolution, row j = 0 being the top row of the image;
+// bilinear filtering interpolates the four texels around pos - 0.5, nearest takes
+// floor(pos); out-of-range texel indices are wrapped by `wrap_mode`.
+#ifndef TWINRAY_CORE_TEXTURE_H
+#define TWINRAY_CORE_TEXTURE_H
+
+#include "core/scene_access.h"
+
+TR_NAMESPACE_BEGIN
+
+// Non-negative remainder of i / n (n > 0), written without `%` on negative operands, which
+// GLSL leaves undefined.
+INLINE int texture_mod(int i, int n) {
+  int q = int(floor(float(i) / float(n)));
+  return clamp(i - q * n, 0, n - 1);
+}
+
+// Dr.Jit WrapMode: repeat tiles, mirror reflects every other tile (period 2n), clamp holds
+// the edge texel.
+INLINE int texture_wrap(int i, int n, uint mode) {
+  if (mode == WRAP_CLAMP) return clamp(i, 0, n - 1);
+  if (mode == WRAP_REPEAT) return texture_mod(i, n);
+  int m = texture_mod(i, 2 * n);
+  return m < n ? m : 2 * n - 1 - m;
+}
+
+INLINE vec3 texture_texel(Texture t, int i, int j) {
+  int x = texture_wrap(i, int(t.width), t.wrap_mode);
+  int y = texture_wrap(j, int(t.height), t.wrap_mode);
+  return scene_texel(t.texel_offset + uint(y) * t.width + uint(x)).xyz();
+}
+
+INLINE vec2 texture_apply_to_uv(Texture t, vec2 uv) {
+  vec3 h = vec3(uv.x, uv.y, 1.0f);
+  return vec2(dot(t.to_uv[0].xyz(), h), dot(t.to_uv[1].xyz(), h));
+}
+
+INLINE vec3 eval_texture(uint texture, vec2 uv) {
+  Texture t = scene_texture(texture);
+  vec2 st = texture_apply_to_uv(t, uv);
+  if (t.type == TEXTURE_CHECKERBOARD) {
+    // Mitsuba checkerboard: color0 where both fractional parts lie on the same side of 1/2.
+    bool mx = st.x - floor(st.x) > 0.5f;
+    bool my = st.y - floor(st.y) > 0.5f;
+    return mx == my ? t.color0.xyz() : t.color1.xyz();
+  }
+  vec2 res = vec2(float(t.width), float(t.height));
+  if (t.filter_mode == FILTER_NEAREST) {
+    vec2 p = floor(st * res);
+    return texture_texel(t, int(p.x), int(p.y));
+  }
+  vec2 pos = st * res - vec2(0.5f);
+  vec2 p0 = floor(pos);
+  vec2 w1 = pos - p0;
+  vec2 w0 = vec2(1.0f) - w1;
+  int i = int(p0.x);
+  int j = int(p0.y);
+  vec3 v00 = texture_texel(t, i, j);
+  vec3 v10 = texture_texel(t, i + 1, j);
+  vec3 v01 = texture_texel(t, i, j + 1);
+  vec3 v11 = texture_texel(t, i + 1, j + 1);
+  return w0.y * (w0.x * v00 + w1.x * v10) + w1.y * (w0.x * v01 + w1.x * v11);
+}
+
+// A constant, or the texture lookup when the value is textured.
+INLINE vec3 eval_textured(TexturedValue v, vec2 uv) {
+  if (v.texture == NO_INDEX) return v.value;
+  return eval_texture(v.texture, uv);
+}
+
+TR_NAMESPACE_END
+
+#endif

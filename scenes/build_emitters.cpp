@@ -1,0 +1,187 @@
+// Emitter plugins -> Emitter records, the envmap's texel alias table and the
+// power-proportional emitter-selection table. Parameters as Mitsuba 3's src/emitters/*.cpp.
+#include <algorithm>
+#include <cmath>
+
+#include "scenes/alias_table.h"
+#include "scenes/scene_builder.h"
+
+namespace tr {
+
+namespace {
+
+const double PI_D = 3.14159265358979323846;
+
+double lum(glm::dvec3 c) { return 0.212671 * c.x + 0.715160 * c.y + 0.072169 * c.z; }
+
+glm::dvec3 emitter_color(Node& e, const std::string& name) {
+  Property* p = find_property(e, name);
+  if (p && p->kind == PropertyKind::Object)
+    fail(p->loc, describe(e), ": a textured '", name, "' is not supported");
+  glm::dvec3 c = take_color(e, name, glm::dvec3(1.0));
+  if (glm::any(glm::lessThan(c, glm::dvec3(0.0))))
+    fail(p->loc, describe(e), ": '", name, "' must not be negative");
+  return c;
+}
+
+Emitter blank_emitter(uint type) {
+  Emitter e{};
+  e.type = type;
+  e.shape = NO_INDEX;
+  e.texture = NO_INDEX;
+  e.alias_offset = NO_INDEX;
+  e.alias_count = 0u;
+  e.scale = 1.0f;
+  store_rows(glm::dmat4(1.0), e.to_world);
+  store_rows(glm::dmat4(1.0), e.to_local);
+  return e;
+}
+
+}  // namespace
+
+void SceneBuilder::add_emitter(Node& n) {
+  PendingEmitter pe;
+  pe.loc = n.loc;
+  Emitter& e = pe.record;
+  if (n.type == "point") {
+    e = blank_emitter(EMITTER_POINT);
+    if (has_property(n, "position") && has_property(n, "to_world"))
+      fail(n.loc, describe(n), ": give either 'position' or 'to_world', not both");
+    glm::dmat4 to_world = take_transform(n, "to_world");
+    glm::dvec3 position = take_point(n, "position", glm::dvec3(to_world[3]));
+    e.position = vec3(position);
+    e.radiance = vec3(emitter_color(n, "intensity"));
+  } else if (n.type == "directional") {
+    e = blank_emitter(EMITTER_DIRECTIONAL);
+    if (has_property(n, "direction") && has_property(n, "to_world"))
+      fail(n.loc, describe(n), ": give either 'direction' or 'to_world', not both");
+    glm::dmat4 to_world = take_transform(n, "to_world");
+    glm::dvec3 d = take_vector(n, "direction", glm::dvec3(to_world * glm::dvec4(0, 0, 1, 0)));
+    if (!(glm::length(d) > 0.0)) fail(n.loc, describe(n), ": the direction is zero");
+    e.direction = vec3(glm::normalize(d));
+    e.radiance = vec3(emitter_color(n, "irradiance"));
+  } else if (n.type == "constant") {
+    e = blank_emitter(EMITTER_CONSTANT);
+    e.radiance = vec3(emitter_color(n, "radiance"));
+  } else if (n.type == "envmap") {
+    e = blank_emitter(EMITTER_ENVMAP);
+    std::string file = take_string(n, "filename");
+    double scale = take_float(n, "scale", 1.0);
+    if (!(scale >= 0.0)) fail(find_property(n, "scale")->loc, describe(n), ": scale must be >= 0");
+    e.scale = float(scale);
+    if (take_bool(n, "mis_compensation", false))
+      fail(find_property(n, "mis_compensation")->loc, describe(n),
+           ": mis_compensation is not supported");
+    glm::dmat4 to_world = take_transform(n, "to_world");
+    store_rows(to_world, e.to_world);
+    store_rows(glm::inverse(to_world), e.to_local);
+    auto [offset, size] = load_texels(n, file, false, false);
+    Texture t{};
+    t.type = TEXTURE_BITMAP;
+    t.filter_mode = FILTER_BILINEAR;
+    t.wrap_mode = WRAP_REPEAT;
+    t.texel_offset = offset;
+    t.width = size.x;
+    t.height = size.y;
+    t.to_uv[0] = vec4(1, 0, 0, 0);
+    t.to_uv[1] = vec4(0, 1, 0, 0);
+    e.texture = uint(b_.textures.size());
+    b_.textures.push_back(t);
+
+    // Texel weights: sin(theta_j) (lum(i, j) + max lum over the 3x3 neighbourhood) / 2, u
+    // wrapping, v clamped, theta_j = pi (j + 0.5) / H (the equirectangular Jacobian times a
+    // radiance estimate that also covers bilinear spill from brighter neighbours).
+    const int w = int(size.x), h = int(size.y);
+    auto texel_lum = [&](int i, int j) {
+      i = ((i % w) + w) % w;
+      j = std::clamp(j, 0, h - 1);
+      return lum(glm::dvec3(glm::vec3(b_.texels[offset + size_t(j) * w + i])));
+    };
+    std::vector<double> weights(size_t(w) * h);
+    double mean = 0.0, solid_angle_weight = 0.0;
+    for (int j = 0; j < h; ++j) {
+      double sin_theta = std::sin(PI_D * (j + 0.5) / h);
+      for (int i = 0; i < w; ++i) {
+        double l = texel_lum(i, j), neighbourhood = 0.0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            neighbourhood = std::max(neighbourhood, texel_lum(i + di, j + dj));
+        weights[size_t(j) * w + i] = sin_theta * (l + neighbourhood) / 2.0;
+        mean += sin_theta * l;
+        solid_angle_weight += sin_theta;
+        if (l < 0.0)
+          fail(find_property(n, "filename")->loc, describe(n), ": negative radiance in the map");
+      }
+    }
+    e.radiance = vec3(1.0f);
+    pe.mean_luminance = mean / solid_angle_weight;  // for the power estimate
+    std::vector<AliasEntry> table;
+    try {
+      table = build_alias_table(weights);
+    } catch (const std::exception&) {
+      fail(find_property(n, "filename")->loc, describe(n), ": the environment map is black");
+    }
+    e.alias_offset = uint(b_.alias.size());
+    e.alias_count = uint(table.size());
+    b_.alias.insert(b_.alias.end(), table.begin(), table.end());
+  } else if (n.type == "area") {
+    fail(n.loc, "an \"area\" emitter must be nested inside a <shape>");
+  } else {
+    fail(n.loc, "unknown emitter type \"", n.type,
+         "\" (supported: area, point, directional, constant, envmap)");
+  }
+  if (e.type == EMITTER_CONSTANT || e.type == EMITTER_ENVMAP) {
+    for (const PendingEmitter& other : emitters_)
+      if (other.record.type == EMITTER_CONSTANT || other.record.type == EMITTER_ENVMAP)
+        fail(n.loc,
+             "only one environment emitter (constant or envmap) is allowed; another one is at ",
+             to_string(other.loc));
+  }
+  check_consumed(n);
+  emitters_.push_back(pe);
+}
+
+void SceneBuilder::finalize_emitters() {
+  // Area emitters were appended by finalize_shapes; the others follow in document order.
+  double env_mean_luminance = 0.0;
+  for (const PendingEmitter& pe : emitters_) {
+    if (pe.record.type == EMITTER_ENVMAP) env_mean_luminance = pe.mean_luminance;
+    if (pe.record.type == EMITTER_CONSTANT || pe.record.type == EMITTER_ENVMAP)
+      b_.globals.environment = uint(b_.emitters.size());
+    b_.emitters.push_back(pe.record);
+  }
+  b_.globals.emitter_count = uint(b_.emitters.size());
+  b_.globals.emitter_alias_offset = uint(b_.alias.size());
+  if (b_.emitters.empty()) return;
+
+  // Power estimates (flux) for the selection pmf.
+  double R = b_.globals.bounds_radius > 0.0f ? b_.globals.bounds_radius : 1.0;  // no geometry
+  std::vector<double> power;
+  for (size_t i = 0; i < b_.emitters.size(); ++i) {
+    const Emitter& e = b_.emitters[i];
+    double l = lum(glm::dvec3(e.radiance));
+    if (e.type == EMITTER_ENVMAP) l = env_mean_luminance;
+    switch (e.type) {
+      case EMITTER_AREA:
+        power.push_back(PI_D * b_.shapes[e.shape].area * l);
+        break;
+      case EMITTER_POINT:
+        power.push_back(4.0 * PI_D * l);
+        break;
+      case EMITTER_DIRECTIONAL:
+        power.push_back(PI_D * R * R * l);
+        break;
+      default:
+        power.push_back(4.0 * PI_D * PI_D * R * R * l * e.scale);
+        break;
+    }
+  }
+  double total = 0.0;
+  for (double p : power) total += p;
+  // All emitters black: every pmf is unbiased, choose uniformly.
+  if (!(total > 0.0)) power.assign(power.size(), 1.0);
+  std::vector<AliasEntry> table = build_alias_table(power);
+  b_.alias.insert(b_.alias.end(), table.begin(), table.end());
+}
+
+}  // namespace tr

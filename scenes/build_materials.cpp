@@ -1,0 +1,377 @@
+// BSDF plugins -> Material records (slot meaning: core/material_slots.h), textures -> Texture
+// records. Defaults are Mitsuba 3's (v3.5 plugin sources, src/bsdfs/*.cpp, src/textures/*.cpp).
+#include <filesystem>
+
+#include "core/material_slots.h"
+#include "scenes/bitmap.h"
+#include "scenes/ior.h"
+#include "scenes/scene_builder.h"
+#include "scenes/values.h"
+
+namespace tr {
+
+namespace {
+
+TexturedValue constant_value(glm::dvec3 v) {
+  TexturedValue t;
+  t.value = vec3(v);
+  t.texture = NO_INDEX;
+  return t;
+}
+
+Material empty_material(uint type) {
+  Material m;
+  m.type = type;
+  m.flags = 0u;
+  m.eta = 1.0f;
+  m.extra = 0.0f;
+  m.opacity = constant_value(glm::dvec3(1.0));
+  for (uint i = 0; i < MATERIAL_PARAM_COUNT; ++i) m.param[i] = constant_value(glm::dvec3(0.0));
+  return m;
+}
+
+double luminance_d(glm::dvec3 c) { return 0.212671 * c.x + 0.715160 * c.y + 0.072169 * c.z; }
+
+// Mitsuba's lookup_ior: a float, or a name from the IOR table.
+double ior_parameter(Node& node, const std::string& name, const char* default_name) {
+  Property* p = find_property(node, name);
+  double ior = 0.0;
+  if (p && (p->kind == PropertyKind::Float || p->kind == PropertyKind::Integer)) {
+    ior = take_float(node, name);
+  } else {
+    std::string value = take_string(node, name, default_name);
+    if (!lookup_dielectric_ior(value, ior))
+      fail(p ? p->loc : node.loc, describe(node), ": unknown ", name, " \"", value,
+           "\"; known names: ", dielectric_ior_names());
+  }
+  if (!(ior > 0.0)) fail(p ? p->loc : node.loc, describe(node), ": ", name, " must be positive");
+  return ior;
+}
+
+// `distribution` of the microfacet BSDFs: Mitsuba's default is beckmann.
+void microfacet_flags(Node& node, Material& m) {
+  std::string d = to_lower(take_string(node, "distribution", "beckmann"));
+  if (d == "beckmann")
+    m.flags |= MATERIAL_BECKMANN;
+  else if (d != "ggx")
+    fail(find_property(node, "distribution")->loc, describe(node), ": unknown distribution \"", d,
+         "\" (expected beckmann or ggx)");
+  if (take_bool(node, "sample_visible", true)) m.flags |= MATERIAL_SAMPLE_VISIBLE;
+}
+
+}  // namespace
+
+void store_rows(const glm::dmat4& m, vec4 rows[3]) {
+  for (int r = 0; r < 3; ++r)
+    rows[r] = vec4(float(m[0][r]), float(m[1][r]), float(m[2][r]), float(m[3][r]));
+}
+
+std::string SceneBuilder::resolve_file(Node& owner, const std::string& name, const char* what) {
+  Property* p = find_property(owner, "filename");
+  Location loc = p ? p->loc : owner.loc;
+  std::filesystem::path dir = std::filesystem::path(loc.file).parent_path();
+  std::filesystem::path file = parsed_.resolver.resolve(name, dir.empty() ? "." : dir);
+  if (file.empty())
+    fail(loc, what, " \"", name,
+         "\" not found (searched the scene's <path> folders, -a paths and the scene folder)");
+  return file.string();
+}
+
+std::pair<uint, glm::uvec2> SceneBuilder::load_texels(Node& owner, const std::string& file_name,
+                                                      bool raw, bool scalar) {
+  std::string path = resolve_file(owner, file_name, "image file");
+  std::string key = path + (raw ? "|raw" : "|srgb") + (scalar ? "|scalar" : "|color");
+  auto it = texel_cache_.find(key);
+  if (it != texel_cache_.end()) return it->second;
+  Image image;
+  try {
+    image = load_image(path, raw);
+  } catch (const std::exception& e) {
+    fail(find_property(owner, "filename")->loc, path, ": ", e.what());
+  }
+  uint offset = uint(b_.texels.size());
+  for (const glm::vec4& t : image.texels) {
+    if (scalar) {
+      // Mitsuba's eval_1 of an RGB bitmap is the luminance of the interpolated color.
+      float y = float(luminance_d(glm::dvec3(t)));
+      b_.texels.push_back(vec4(y, y, y, t.w));
+    } else {
+      b_.texels.push_back(vec4(t));
+    }
+  }
+  auto result = std::make_pair(offset, glm::uvec2(image.width, image.height));
+  texel_cache_[key] = result;
+  return result;
+}
+
+uint SceneBuilder::texture(Node& tex, bool scalar) {
+  auto key = std::make_pair(static_cast<const Node*>(&tex), scalar);
+  auto it = texture_cache_.find(key);
+  if (it != texture_cache_.end()) return it->second;
+
+  Texture t;
+  t.filter_mode = FILTER_BILINEAR;
+  t.wrap_mode = WRAP_REPEAT;
+  t.texel_offset = 0u;
+  t.width = t.height = 0u;
+  t.pad0 = t.pad1 = 0u;
+  t.color0 = t.color1 = vec4(0.0f);
+  glm::dmat4 to_uv = take_transform(tex, "to_uv");
+  // Rows of the 2D affine map: rows/columns 0, 1 and 3 of the 4x4 transform.
+  t.to_uv[0] = vec4(float(to_uv[0][0]), float(to_uv[1][0]), float(to_uv[3][0]), 0.0f);
+  t.to_uv[1] = vec4(float(to_uv[0][1]), float(to_uv[1][1]), float(to_uv[3][1]), 0.0f);
+
+  if (tex.type == "bitmap") {
+    t.type = TEXTURE_BITMAP;
+    std::string filter = take_string(tex, "filter_type", "bilinear");
+    if (filter == "nearest")
+      t.filter_mode = FILTER_NEAREST;
+    else if (filter != "bilinear")
+      fail(find_property(tex, "filter_type")->loc, describe(tex), ": filter_type \"", filter,
+           "\" must be nearest or bilinear");
+    std::string wrap = take_string(tex, "wrap_mode", "repeat");
+    if (wrap == "mirror")
+      t.wrap_mode = WRAP_MIRROR;
+    else if (wrap == "clamp")
+      t.wrap_mode = WRAP_CLAMP;
+    else if (wrap != "repeat")
+      fail(find_property(tex, "wrap_mode")->loc, describe(tex), ": wrap_mode \"", wrap,
+           "\" must be repeat, mirror or clamp");
+    bool raw = take_bool(tex, "raw", false);
+    take_bool(tex, "accel", true);  // a CUDA texture-unit hint in Mitsuba; no effect on values
+    std::string file = take_string(tex, "filename");
+    auto [offset, size] = load_texels(tex, file, raw, scalar);
+    t.texel_offset = offset;
+    t.width = size.x;
+    t.height = size.y;
+  } else if (tex.type == "checkerboard") {
+    t.type = TEXTURE_CHECKERBOARD;
+    glm::dvec3 c0 = take_color(tex, "color0", glm::dvec3(0.4));
+    glm::dvec3 c1 = take_color(tex, "color1", glm::dvec3(0.2));
+    if (scalar) {
+      // Mitsuba's checkerboard eval_1 picks color0 where eval picks color1 and vice versa
+      // (src/textures/checkerboard.cpp: `neq` in eval_1, `eq` in eval); scalar parameters are
+      // read through eval_1, so they see the colors swapped. Reproduced here.
+      glm::dvec3 s0(luminance_d(c1)), s1(luminance_d(c0));
+      c0 = s0;
+      c1 = s1;
+    }
+    t.color0 = vec4(vec3(c0), 1.0f);
+    t.color1 = vec4(vec3(c1), 1.0f);
+  } else {
+    fail(tex.loc, "unknown texture type \"", tex.type, "\" (supported: bitmap, checkerboard)");
+  }
+  check_consumed(tex);
+  uint index = uint(b_.textures.size());
+  b_.textures.push_back(t);
+  texture_cache_[key] = index;
+  return index;
+}
+
+TexturedValue SceneBuilder::textured(Node& owner, const std::string& name, glm::dvec3 default_value,
+                                     bool scalar) {
+  Property* p = find_property(owner, name);
+  if (p && p->kind == PropertyKind::Object) {
+    p->used = true;
+    if (p->object->tag != "texture")
+      fail(p->loc, "parameter '", name, "' of ", describe(owner),
+           " must be a texture or a value, not a <", p->object->tag, ">");
+    TexturedValue v;
+    v.value = vec3(0.0f);
+    v.texture = texture(*p->object, scalar);
+    return v;
+  }
+  glm::dvec3 c = take_color(owner, name, default_value);
+  if (scalar) c = glm::dvec3(luminance_d(c));  // eval_1 of a constant color: its luminance
+  return constant_value(c);
+}
+
+uint SceneBuilder::default_material() {
+  if (default_material_ == NO_INDEX) {
+    // Mitsuba: a shape without a BSDF gets a diffuse BSDF of reflectance 0.5.
+    Material m = empty_material(BSDF_DIFFUSE);
+    m.param[DIFFUSE_REFLECTANCE] = constant_value(glm::dvec3(0.5));
+    default_material_ = uint(b_.materials.size());
+    b_.materials.push_back(m);
+  }
+  return default_material_;
+}
+
+uint SceneBuilder::material(Node& bsdf) {
+  auto it = material_cache_.find(&bsdf);
+  if (it != material_cache_.end()) return it->second;
+  Material m = build_material(bsdf);
+  uint index = uint(b_.materials.size());
+  b_.materials.push_back(m);
+  material_cache_[&bsdf] = index;
+  return index;
+}
+
+Material SceneBuilder::build_material(Node& n) {
+  const std::string& type = n.type;
+  Material m;
+  if (type == "diffuse") {
+    m = empty_material(BSDF_DIFFUSE);
+    m.param[DIFFUSE_REFLECTANCE] = textured(n, "reflectance", glm::dvec3(0.5), false);
+  } else if (type == "conductor" || type == "roughconductor") {
+    m = empty_material(type == "conductor" ? BSDF_CONDUCTOR : BSDF_ROUGHCONDUCTOR);
+    std::string material_name = take_string(n, "material", "none");
+    if (has_property(n, "eta") && material_name != "none")
+      fail(find_property(n, "material")->loc, describe(n),
+           ": give either a named 'material' or 'eta'/'k', not both");
+    if (material_name == "none") {
+      // Mitsuba's default: eta = 0, k = 1, a perfect mirror.
+      m.param[CONDUCTOR_ETA] = textured(n, "eta", glm::dvec3(0.0), false);
+      m.param[CONDUCTOR_K] = textured(n, "k", glm::dvec3(1.0), false);
+    } else {
+      const ConductorIor* c = lookup_conductor_ior(material_name);
+      if (!c)
+        fail(find_property(n, "material")->loc, describe(n), ": unknown conductor material \"",
+             material_name, "\"; known: ", conductor_ior_names());
+      m.param[CONDUCTOR_ETA] = constant_value(glm::dvec3(c->eta[0], c->eta[1], c->eta[2]));
+      m.param[CONDUCTOR_K] = constant_value(glm::dvec3(c->k[0], c->k[1], c->k[2]));
+    }
+    m.param[CONDUCTOR_SPECULAR_REFLECTANCE] =
+        textured(n, "specular_reflectance", glm::dvec3(1.0), false);
+    if (type == "roughconductor") {
+      microfacet_flags(n, m);
+      bool aniso = has_property(n, "alpha_u") || has_property(n, "alpha_v");
+      if (aniso) {
+        if (has_property(n, "alpha"))
+          fail(find_property(n, "alpha")->loc, describe(n),
+               ": give either alpha or alpha_u/alpha_v");
+        if (!has_property(n, "alpha_u") || !has_property(n, "alpha_v"))
+          fail(n.loc, describe(n), ": alpha_u and alpha_v must be given together");
+        m.param[CONDUCTOR_ALPHA_U] = textured(n, "alpha_u", glm::dvec3(0.1), true);
+        m.param[CONDUCTOR_ALPHA_V] = textured(n, "alpha_v", glm::dvec3(0.1), true);
+      } else {
+        m.param[CONDUCTOR_ALPHA_U] = m.param[CONDUCTOR_ALPHA_V] =
+            textured(n, "alpha", glm::dvec3(0.1), true);
+      }
+    }
+  } else if (type == "dielectric" || type == "roughdielectric" || type == "thindielectric") {
+    m = empty_material(type == "dielectric"        ? BSDF_DIELECTRIC
+                       : type == "roughdielectric" ? BSDF_ROUGHDIELECTRIC
+                                                   : BSDF_THINDIELECTRIC);
+    double int_ior = ior_parameter(n, "int_ior", "bk7");
+    double ext_ior = ior_parameter(n, "ext_ior", "air");
+    m.eta = float(int_ior / ext_ior);
+    m.param[DIELECTRIC_SPECULAR_REFLECTANCE] =
+        textured(n, "specular_reflectance", glm::dvec3(1.0), false);
+    m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE] =
+        textured(n, "specular_transmittance", glm::dvec3(1.0), false);
+    if (type == "roughdielectric") {
+      if (int_ior == ext_ior) fail(n.loc, describe(n), ": int_ior and ext_ior must differ");
+      microfacet_flags(n, m);
+      bool aniso = has_property(n, "alpha_u") || has_property(n, "alpha_v");
+      if (aniso) {
+        if (has_property(n, "alpha"))
+          fail(find_property(n, "alpha")->loc, describe(n),
+               ": give either alpha or alpha_u/alpha_v");
+        if (!has_property(n, "alpha_u") || !has_property(n, "alpha_v"))
+          fail(n.loc, describe(n), ": alpha_u and alpha_v must be given together");
+        m.param[DIELECTRIC_ALPHA_U] = textured(n, "alpha_u", glm::dvec3(0.1), true);
+        m.param[DIELECTRIC_ALPHA_V] = textured(n, "alpha_v", glm::dvec3(0.1), true);
+      } else {
+        m.param[DIELECTRIC_ALPHA_U] = m.param[DIELECTRIC_ALPHA_V] =
+            textured(n, "alpha", glm::dvec3(0.1), true);
+      }
+    }
+  } else if (type == "plastic" || type == "roughplastic") {
+    m = empty_material(type == "plastic" ? BSDF_PLASTIC : BSDF_ROUGHPLASTIC);
+    double int_ior = ior_parameter(n, "int_ior", "polypropylene");
+    double ext_ior = ior_parameter(n, "ext_ior", "air");
+    m.eta = float(int_ior / ext_ior);
+    m.param[PLASTIC_DIFFUSE_REFLECTANCE] =
+        textured(n, "diffuse_reflectance", glm::dvec3(0.5), false);
+    m.param[PLASTIC_SPECULAR_REFLECTANCE] =
+        textured(n, "specular_reflectance", glm::dvec3(1.0), false);
+    if (take_bool(n, "nonlinear", false)) m.flags |= MATERIAL_NONLINEAR;
+    if (type == "roughplastic") {
+      microfacet_flags(n, m);
+      if (has_property(n, "alpha_u") || has_property(n, "alpha_v"))
+        fail(n.loc, describe(n), ": roughplastic is isotropic; use 'alpha'");
+      m.param[PLASTIC_ALPHA] = constant_value(glm::dvec3(take_float(n, "alpha", 0.1)));
+    }
+  } else if (type == "principled") {
+    m = build_principled(n);
+  } else if (type == "twosided" || type == "mask") {
+    std::vector<Property*> inner = take_objects(n, "bsdf");
+    if (inner.empty()) fail(n.loc, describe(n), " needs a nested BSDF");
+    for (Property* p : inner)
+      if (p->object != inner[0]->object)
+        fail(p->loc, describe(n), ": different front and back BSDFs are not supported");
+    if (type == "mask" && inner.size() != 1)
+      fail(inner[1]->loc, describe(n), " takes exactly one nested BSDF");
+    TexturedValue opacity = constant_value(glm::dvec3(1.0));
+    if (type == "mask") opacity = textured(n, "opacity", glm::dvec3(0.5), true);
+    m = build_material(*inner[0]->object);
+    if (type == "twosided") {
+      if (m.flags & MATERIAL_TWOSIDED) fail(n.loc, describe(n), ": nested twosided BSDFs");
+      m.flags |= MATERIAL_TWOSIDED;
+    } else {
+      if (m.flags & MATERIAL_MASKED) fail(n.loc, describe(n), ": nested mask BSDFs");
+      m.flags |= MATERIAL_MASKED;
+      m.opacity = opacity;
+    }
+  } else {
+    fail(n.loc, "unknown BSDF type \"", type,
+         "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
+         "thindielectric, plastic, roughplastic, principled, twosided, mask)");
+  }
+  check_consumed(n);
+  return m;
+}
+
+Material SceneBuilder::build_principled(Node& n) {
+  // Mitsuba src/bsdfs/principled.cpp: defaults and the eta <-> specular correspondence
+  // eta = 2 / (1 - sqrt(0.08 specular)) - 1.
+  Material m = empty_material(BSDF_PRINCIPLED);
+  m.param[PRINCIPLED_BASE_COLOR] = textured(n, "base_color", glm::dvec3(0.5), false);
+  m.param[PRINCIPLED_ROUGHNESS] = textured(n, "roughness", glm::dvec3(0.5), true);
+  m.param[PRINCIPLED_METALLIC] = textured(n, "metallic", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_SPEC_TINT] = textured(n, "spec_tint", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_ANISOTROPIC] = textured(n, "anisotropic", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_SHEEN] = textured(n, "sheen", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_SHEEN_TINT] = textured(n, "sheen_tint", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_CLEARCOAT] = textured(n, "clearcoat", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_CLEARCOAT_GLOSS] = textured(n, "clearcoat_gloss", glm::dvec3(0.0), true);
+  m.param[PRINCIPLED_SPEC_TRANS] = textured(n, "spec_trans", glm::dvec3(0.0), true);
+  if (Property* flat = find_property(n, "flatness")) {
+    bool zero = (flat->kind == PropertyKind::Float || flat->kind == PropertyKind::Integer) &&
+                take_float(n, "flatness") == 0.0;
+    if (!zero)
+      fail(flat->loc, describe(n), ": 'flatness' is not supported by twinray's principled BSDF");
+  }
+  double srate_diffuse = take_float(n, "diffuse_reflectance_sampling_rate", 1.0);
+  double srate_specular = take_float(n, "main_specular_sampling_rate", 1.0);
+  double srate_clearcoat = take_float(n, "clearcoat_sampling_rate", 1.0);
+  m.param[PRINCIPLED_SAMPLING_RATES] =
+      constant_value(glm::dvec3(srate_diffuse, srate_specular, srate_clearcoat));
+
+  // Mitsuba's get_flag: a lobe is on when its parameter is given and not the constant 0.
+  Property* st = find_property(n, "spec_trans");
+  bool has_spec_trans =
+      st && !((st->kind == PropertyKind::Float || st->kind == PropertyKind::Integer) &&
+              (st->kind == PropertyKind::Float ? st->number : double(st->integer)) == 0.0);
+  double eta, specular;
+  if (has_property(n, "eta") && has_property(n, "specular"))
+    fail(find_property(n, "eta")->loc, describe(n), ": give either 'eta' or 'specular', not both");
+  if (has_property(n, "eta")) {
+    eta = take_float(n, "eta");
+    if (has_spec_trans && eta == 1.0) eta = 1.001;  // eta = 1 is not plausible for transmission
+    if (!(eta > 0.0)) fail(find_property(n, "eta")->loc, describe(n), ": eta must be positive");
+    specular = sqr((eta - 1.0) / (eta + 1.0)) / 0.08;
+  } else {
+    specular = take_float(n, "specular", 0.5);
+    if (has_spec_trans && specular == 0.0) specular = 1e-3;
+    if (!(specular >= 0.0 && specular < 12.5))
+      fail(find_property(n, "specular")->loc, describe(n), ": specular must be in [0, 12.5)");
+    eta = 2.0 / (1.0 - std::sqrt(0.08 * specular)) - 1.0;
+  }
+  m.eta = float(eta);
+  m.param[PRINCIPLED_SPECULAR] = constant_value(glm::dvec3(specular));
+  return m;
+}
+
+}  // namespace tr

@@ -1,0 +1,225 @@
+// Sensor (perspective, thinlens), film (hdrfilm), reconstruction filter (box, gaussian),
+// sampler (independent) and integrator (path, direct, moment) -> Camera, Integrator and the
+// Scene's spp/seed. Defaults as Mitsuba 3 (src/sensors, src/render/sensor.cpp, src/films,
+// src/rfilters, src/samplers, src/integrators).
+#include <cmath>
+
+#include "scenes/scene_builder.h"
+#include "scenes/values.h"
+
+namespace tr {
+
+namespace {
+
+const double PI_D = 3.14159265358979323846;
+
+Node empty_node(const std::string& tag, const std::string& type, const Location& loc) {
+  Node n;
+  n.tag = tag;
+  n.type = type;
+  n.loc = loc;
+  return n;
+}
+
+// Mitsuba's parse_fov (src/render/sensor.cpp): the horizontal field of view in degrees.
+double horizontal_fov(Node& s, double aspect) {
+  if (has_property(s, "fov") && has_property(s, "focal_length"))
+    fail(find_property(s, "fov")->loc, describe(s), ": give either 'fov' or 'focal_length'");
+  double fov;
+  std::string axis;
+  if (has_property(s, "fov")) {
+    fov = take_float(s, "fov");
+    axis = to_lower(take_string(s, "fov_axis", "x"));
+    if (axis == "smaller") axis = aspect > 1 ? "y" : "x";
+    if (axis == "larger") axis = aspect > 1 ? "x" : "y";
+  } else {
+    // Default: a 50 mm lens on a 36 x 24 mm film, along the diagonal.
+    std::string f = take_string(s, "focal_length", "50mm");
+    Location loc = has_property(s, "focal_length") ? find_property(s, "focal_length")->loc : s.loc;
+    if (f.size() > 2 && f.compare(f.size() - 2, 2, "mm") == 0) f = f.substr(0, f.size() - 2);
+    double value = parse_double(f, loc, "focal_length");
+    if (!(value > 0.0)) fail(loc, "focal_length must be positive");
+    fov = 2.0 * std::atan(std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / (2.0 * value)) * 180.0 / PI_D;
+    axis = "diagonal";
+  }
+  auto rad = [](double deg) { return deg * PI_D / 180.0; };
+  double result;
+  if (axis == "x") {
+    result = fov;
+  } else if (axis == "y") {
+    result = 2.0 * std::atan(std::tan(0.5 * rad(fov)) * aspect) * 180.0 / PI_D;
+  } else if (axis == "diagonal") {
+    double diagonal = 2.0 * std::tan(0.5 * rad(fov));
+    double width = diagonal / std::sqrt(1.0 + 1.0 / (aspect * aspect));
+    result = 2.0 * std::atan(width * 0.5) * 180.0 / PI_D;
+  } else {
+    fail(find_property(s, "fov_axis")->loc, describe(s), ": fov_axis \"", axis,
+         "\" must be x, y, diagonal, smaller or larger");
+  }
+  if (!(result > 0.0 && result < 180.0))
+    fail(s.loc, describe(s), ": the field of view must be in (0, 180) degrees");
+  return result;
+}
+
+}  // namespace
+
+void SceneBuilder::add_sensor(Node& s) {
+  if (s.type != "perspective" && s.type != "thinlens")
+    fail(s.loc, "unknown sensor type \"", s.type, "\" (supported: perspective, thinlens)");
+  Camera& cam = b_.globals.camera;
+  cam.type = s.type == "perspective" ? SENSOR_PERSPECTIVE : SENSOR_THINLENS;
+
+  // ---- film and its reconstruction filter
+  std::vector<Property*> films = take_objects(s, "film");
+  if (films.size() > 1) fail(films[1]->loc, describe(s), " has more than one film");
+  Node default_film = empty_node("film", "hdrfilm", s.loc);
+  Node& film = films.empty() ? default_film : *films[0]->object;
+  if (film.type != "hdrfilm")
+    fail(film.loc, "unknown film type \"", film.type, "\" (supported: hdrfilm)");
+  long long width = take_integer(film, "width", 768), height = take_integer(film, "height", 576);
+  if (width <= 0 || height <= 0 || width > 65536 || height > 65536)
+    fail(film.loc, describe(film), ": width and height must be in [1, 65536]");
+  long long crop_x = take_integer(film, "crop_offset_x", 0),
+            crop_y = take_integer(film, "crop_offset_y", 0);
+  long long crop_w = take_integer(film, "crop_width", width),
+            crop_h = take_integer(film, "crop_height", height);
+  if (crop_x != 0 || crop_y != 0 || crop_w != width || crop_h != height)
+    fail(film.loc, describe(film), ": crop windows other than the full film are not supported");
+  std::string file_format = to_lower(take_string(film, "file_format", "openexr"));
+  if (file_format != "openexr" && file_format != "exr")
+    fail(find_property(film, "file_format")->loc, describe(film), ": file_format must be openexr");
+  std::string pixel_format = to_lower(take_string(film, "pixel_format", "rgb"));
+  if (pixel_format != "rgb" && pixel_format != "rgba")
+    fail(find_property(film, "pixel_format")->loc, describe(film), ": pixel_format \"",
+         pixel_format, "\" is not supported (rgb, rgba)");
+  std::string component_format = to_lower(take_string(film, "component_format", "float16"));
+  if (component_format != "float16" && component_format != "float32")
+    fail(find_property(film, "component_format")->loc, describe(film), ": component_format \"",
+         component_format, "\" is not supported (float16, float32)");
+  if (take_bool(film, "sample_border", false))
+    fail(find_property(film, "sample_border")->loc, describe(film),
+         ": sample_border is not supported");
+  if (take_bool(film, "compensate", false))
+    fail(find_property(film, "compensate")->loc, describe(film), ": compensate is not supported");
+  take_bool(film, "banner", false);  // accepted and ignored by Mitsuba 3 as well
+  cam.width = uint(width);
+  cam.height = uint(height);
+  cam.crop_offset_x = cam.crop_offset_y = 0u;
+
+  std::vector<Property*> rfilters = take_objects(film, "rfilter");
+  if (rfilters.size() > 1) fail(rfilters[1]->loc, describe(film), " has more than one rfilter");
+  Node default_rfilter = empty_node("rfilter", "gaussian", film.loc);  // Mitsuba's default
+  Node& rf = rfilters.empty() ? default_rfilter : *rfilters[0]->object;
+  if (rf.type == "box") {
+    cam.rfilter = RFILTER_BOX;
+    cam.filter_stddev = 0.0f;
+    cam.filter_radius = 0.5f;
+  } else if (rf.type == "gaussian") {
+    double stddev = take_float(rf, "stddev", 0.5);
+    if (!(stddev > 0.0)) fail(rf.loc, describe(rf), ": stddev must be positive");
+    cam.rfilter = RFILTER_GAUSSIAN;
+    cam.filter_stddev = float(stddev);
+    cam.filter_radius = float(4.0 * stddev);  // Mitsuba gaussian.cpp: radius = 4 stddev
+  } else {
+    fail(rf.loc, "unknown rfilter type \"", rf.type, "\" (supported: box, gaussian)");
+  }
+  check_consumed(rf);
+  check_consumed(film);
+
+  // ---- sampler
+  std::vector<Property*> samplers = take_objects(s, "sampler");
+  if (samplers.size() > 1) fail(samplers[1]->loc, describe(s), " has more than one sampler");
+  Node default_sampler = empty_node("sampler", "independent", s.loc);
+  Node& sampler = samplers.empty() ? default_sampler : *samplers[0]->object;
+  if (sampler.type != "independent")
+    fail(sampler.loc, "unknown sampler type \"", sampler.type, "\" (supported: independent)");
+  long long spp = take_integer(sampler, "sample_count", 4), seed = take_integer(sampler, "seed", 0);
+  if (spp <= 0 || spp > 0xffffffffLL)
+    fail(sampler.loc, describe(sampler), ": sample_count must be positive");
+  if (seed < 0 || seed > 0xffffffffLL)
+    fail(sampler.loc, describe(sampler), ": seed must be in [0, 2^32)");
+  scene_.spp = uint(spp);
+  scene_.seed = uint(seed);
+  check_consumed(sampler);
+
+  // ---- projection
+  double aspect = double(width) / double(height);
+  double fov_x = horizontal_fov(s, aspect);
+  double tan_x = std::tan(0.5 * fov_x * PI_D / 180.0);
+  cam.tan_half_fov = vec2(float(tan_x), float(tan_x / aspect));
+  double near_clip = take_float(s, "near_clip", 1e-2), far_clip = take_float(s, "far_clip", 1e4);
+  if (!(near_clip > 0.0)) fail(s.loc, describe(s), ": near_clip must be positive");
+  if (!(far_clip > near_clip)) fail(s.loc, describe(s), ": far_clip must exceed near_clip");
+  cam.near_clip = float(near_clip);
+  cam.far_clip = float(far_clip);
+  double shutter_open = take_float(s, "shutter_open", 0.0);
+  if (take_float(s, "shutter_close", shutter_open) != shutter_open)
+    fail(s.loc, describe(s), ": motion blur (shutter_open < shutter_close) is not supported");
+  cam.principal_point = vec2(0.0f);
+  cam.aperture_radius = 0.0f;
+  cam.focus_distance = float(far_clip);
+  if (s.type == "perspective") {
+    cam.principal_point = vec2(float(take_float(s, "principal_point_offset_x", 0.0)),
+                               float(take_float(s, "principal_point_offset_y", 0.0)));
+  } else {
+    double aperture = take_float(s, "aperture_radius");
+    double focus = take_float(s, "focus_distance", far_clip);
+    if (!(aperture >= 0.0) || !(focus > 0.0))
+      fail(s.loc, describe(s), ": needs aperture_radius >= 0 and focus_distance > 0");
+    cam.aperture_radius = float(aperture);
+    cam.focus_distance = float(focus);
+  }
+  store_rows(take_transform(s, "to_world"), cam.to_world);
+  check_consumed(s);
+}
+
+void SceneBuilder::add_integrator(Node& n) {
+  Node* inner = &n;
+  if (n.type == "moment") {
+    std::vector<Property*> nested = take_objects(n, "integrator");
+    if (nested.size() != 1) fail(n.loc, describe(n), " must wrap exactly one integrator");
+    check_consumed(n);
+    inner = nested[0]->object.get();
+  }
+  Integrator& it = b_.globals.integrator;
+  it = Integrator{};
+  it.max_depth = -1;
+  it.rr_depth = 5;
+  it.emitter_samples = it.bsdf_samples = 1u;
+  Node& m = *inner;
+  if (m.type == "path") {
+    it.type = INTEGRATOR_PATH;
+    long long max_depth = take_integer(m, "max_depth", -1),
+              rr_depth = take_integer(m, "rr_depth", 5);
+    if (max_depth < -1 || max_depth > 1000000)
+      fail(find_property(m, "max_depth")->loc, describe(m),
+           ": max_depth must be -1 (unbounded) or >= 0");
+    if (rr_depth <= 0 || rr_depth > 1000000)
+      fail(find_property(m, "rr_depth")->loc, describe(m), ": rr_depth must be positive");
+    it.max_depth = int(max_depth);
+    it.rr_depth = int(rr_depth);
+  } else if (m.type == "direct") {
+    it.type = INTEGRATOR_DIRECT;
+    // Mitsuba direct.cpp: shading_samples sets both counts unless they are given.
+    if (has_property(m, "shading_samples") &&
+        (has_property(m, "emitter_samples") || has_property(m, "bsdf_samples")))
+      fail(find_property(m, "shading_samples")->loc, describe(m),
+           ": give either shading_samples or emitter_samples/bsdf_samples");
+    long long shading = take_integer(m, "shading_samples", 1);
+    long long emitter = take_integer(m, "emitter_samples", shading);
+    long long bsdf = take_integer(m, "bsdf_samples", shading);
+    if (shading < 0 || emitter < 0 || bsdf < 0 || emitter + bsdf == 0)
+      fail(m.loc, describe(m), ": sample counts must be >= 0 and not both zero");
+    it.emitter_samples = uint(emitter);
+    it.bsdf_samples = uint(bsdf);
+  } else if (m.type == "moment") {
+    fail(m.loc, "nested moment integrators are not supported");
+  } else {
+    fail(m.loc, "unknown integrator type \"", m.type, "\" (supported: path, direct, moment)");
+  }
+  it.hide_emitters = take_bool(m, "hide_emitters", false) ? 1u : 0u;
+  check_consumed(m);
+  scene_.integrator_name = n.type == "moment" ? "moment(" + m.type + ")" : m.type;
+}
+
+}  // namespace tr

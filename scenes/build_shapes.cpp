@@ -1,0 +1,306 @@
+// Shape plugins -> Shape/Instance records and vertex buffers. Meshes outside shapegroups are
+// pre-transformed to world space; analytic shapes keep a canonical object and its transforms
+// (core/scene_types.h). Semantics follow Mitsuba 3's src/shapes/*.cpp.
+#include <cmath>
+
+#include "core/frame.h"
+#include "scenes/alias_table.h"
+#include "scenes/scene_builder.h"
+
+namespace tr {
+
+namespace {
+
+const double PI_D = 3.14159265358979323846;
+
+glm::dmat4 translation(glm::dvec3 t) {
+  glm::dmat4 m(1.0);
+  m[3] = glm::dvec4(t, 1.0);
+  return m;
+}
+
+glm::dmat4 scaling(glm::dvec3 s) {
+  glm::dmat4 m(1.0);
+  m[0][0] = s.x;
+  m[1][1] = s.y;
+  m[2][2] = s.z;
+  return m;
+}
+
+// Fails unless the linear part of `m` maps the given axes to mutually orthogonal vectors of
+// equal length (a similarity on them), the condition under which the analytic shape's area
+// formula holds; returns that common length.
+double similarity_scale(const Node& n, const glm::dmat4& m, bool include_z) {
+  glm::dvec3 c0(m[0]), c1(m[1]), c2(m[2]);
+  double l0 = glm::length(c0), l1 = glm::length(c1);
+  double tol = 1e-5;
+  bool ok =
+      std::abs(l0 - l1) <= tol * std::max(l0, l1) && std::abs(glm::dot(c0, c1)) <= tol * l0 * l1;
+  if (include_z) {
+    double l2 = glm::length(c2);
+    ok = ok && std::abs(l2 - l0) <= tol * std::max(l0, l2) &&
+         std::abs(glm::dot(c0, c2)) <= tol * l0 * l2 && std::abs(glm::dot(c1, c2)) <= tol * l1 * l2;
+  }
+  if (!ok || !(l0 > 0.0))
+    fail(n.loc, describe(n),
+         ": to_world must be a rotation, translation and uniform scale for this analytic shape");
+  return l0;
+}
+
+void set_transforms(Shape& r, const glm::dmat4& m) {
+  store_rows(m, r.to_world);
+  store_rows(glm::inverse(m), r.to_object);
+}
+
+// Corners of the canonical object's bounding box, for bounds.
+std::vector<glm::dvec3> canonical_corners(uint type) {
+  double zlo = type == SHAPE_SPHERE ? -1.0 : 0.0;
+  double zhi = type == SHAPE_DISK ? 0.0 : 1.0;
+  std::vector<glm::dvec3> c;
+  for (double x : {-1.0, 1.0})
+    for (double y : {-1.0, 1.0})
+      for (double z : {zlo, zhi}) c.emplace_back(x, y, z);
+  return c;
+}
+
+glm::dmat4 shape_to_world(const Shape& r) {
+  glm::dmat4 m(1.0);
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 4; ++col) m[col][row] = r.to_world[row][col];
+  return m;
+}
+
+void extend_bounds(const PendingShape& s, const glm::dmat4& to_world, AxisBox& box) {
+  if (s.record.type == SHAPE_MESH) {
+    for (const glm::vec3& p : s.mesh.positions)
+      box.extend(glm::dvec3(to_world * glm::dvec4(glm::dvec3(p), 1.0)));
+  } else if (s.record.type == SHAPE_SPHERE) {
+    glm::dmat4 m = to_world * shape_to_world(s.record);
+    glm::dvec3 c(m[3]);
+    double r = glm::length(glm::dvec3(m[0]));
+    box.extend(c - glm::dvec3(r));
+    box.extend(c + glm::dvec3(r));
+  } else {
+    glm::dmat4 m = to_world * shape_to_world(s.record);
+    for (const glm::dvec3& c : canonical_corners(s.record.type))
+      box.extend(glm::dvec3(m * glm::dvec4(c, 1.0)));
+  }
+}
+
+}  // namespace
+
+void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_group) {
+  PendingShape s;
+  Shape& r = s.record;
+  r.flags = 0u;
+  r.emitter = NO_INDEX;
+  r.first_index = r.triangle_count = r.first_vertex = r.vertex_count = 0u;
+  r.pad0 = r.pad1 = r.pad2 = 0u;
+  set_transforms(r, glm::dmat4(1.0));
+
+  glm::dmat4 to_world = take_transform(n, "to_world");
+  if (std::abs(glm::determinant(glm::dmat3(to_world))) == 0.0)
+    fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
+  if (take_bool(n, "flip_normals", false)) r.flags |= SHAPE_FLIP_NORMALS;
+
+  std::vector<Property*> bsdfs = take_objects(n, "bsdf");
+  if (bsdfs.size() > 1) fail(bsdfs[1]->loc, describe(n), " has more than one BSDF");
+  r.material = bsdfs.empty() ? default_material() : material(*bsdfs[0]->object);
+
+  std::vector<Property*> emitters = take_objects(n, "emitter");
+  if (emitters.size() > 1) fail(emitters[1]->loc, describe(n), " has more than one emitter");
+  if (!emitters.empty()) {
+    Node& e = *emitters[0]->object;
+    if (in_group) fail(e.loc, "emitters inside a <shapegroup> are not supported");
+    if (e.type != "area")
+      fail(e.loc, "a shape can only carry an \"area\" emitter, not \"", e.type, "\"");
+    Property* rad = find_property(e, "radiance");
+    if (rad && rad->kind == PropertyKind::Object)
+      fail(rad->loc, describe(e), ": textured radiance is not supported");
+    glm::dvec3 radiance = take_color(e, "radiance", glm::dvec3(1.0));
+    if (glm::any(glm::lessThan(radiance, glm::dvec3(0.0))))
+      fail(rad->loc, describe(e), ": radiance must not be negative");
+    check_consumed(e);
+    s.emitting = true;
+    s.radiance = glm::vec3(radiance);
+    s.emitter_loc = e.loc;
+  }
+
+  const std::string& type = n.type;
+  bool is_mesh = type == "obj" || type == "ply" || type == "rectangle" || type == "cube";
+  if (is_mesh) {
+    r.type = SHAPE_MESH;
+    bool face_normals = false;
+    if (type == "obj" || type == "ply") {
+      std::string file = take_string(n, "filename");
+      face_normals = take_bool(n, "face_normals", false);
+      bool flip_tex = take_bool(n, "flip_tex_coords", type == "obj");
+      std::string path = resolve_file(n, file, "mesh file");
+      std::string key = path + (flip_tex ? "|flip" : "");
+      auto cached = mesh_cache_.find(key);
+      if (cached == mesh_cache_.end()) {
+        try {
+          cached = mesh_cache_.emplace(key, load_mesh_file(path, flip_tex)).first;
+        } catch (const std::exception& e) {
+          fail(find_property(n, "filename")->loc, path, ": ", e.what());
+        }
+      }
+      s.mesh = cached->second;
+    } else {
+      s.mesh = type == "rectangle" ? make_rectangle() : make_cube();
+    }
+    transform_mesh(s.mesh, to_world);
+    if (face_normals)
+      s.mesh.normals.clear();
+    else if (s.mesh.normals.empty())
+      s.mesh.normals = mesh_vertex_normals(s.mesh);  // Mitsuba recomputes after to_world
+    if (!s.mesh.normals.empty()) r.flags |= SHAPE_HAS_NORMALS;
+    if (!s.mesh.uvs.empty()) r.flags |= SHAPE_HAS_UVS;
+    r.triangle_count = uint(s.mesh.indices.size() / 3);
+    r.vertex_count = uint(s.mesh.positions.size());
+    double area = 0.0;
+    for (size_t t = 0; t < r.triangle_count; ++t) area += triangle_area(s.mesh, t);
+    r.area = float(area);
+  } else if (type == "sphere") {
+    r.type = SHAPE_SPHERE;
+    glm::dvec3 center = take_point(n, "center", glm::dvec3(0.0));
+    double radius = take_float(n, "radius", 1.0);
+    if (!(radius > 0.0)) fail(n.loc, describe(n), ": radius must be positive");
+    glm::dmat4 m = to_world * translation(center) * scaling(glm::dvec3(radius));
+    double world_radius = similarity_scale(n, m, true);
+    set_transforms(r, m);
+    r.area = float(4.0 * PI_D * world_radius * world_radius);
+  } else if (type == "disk") {
+    r.type = SHAPE_DISK;
+    set_transforms(r, to_world);
+    // The unit disk's image under an affine map has area pi |M e_x x M e_y|.
+    r.area =
+        float(PI_D * glm::length(glm::cross(glm::dvec3(to_world[0]), glm::dvec3(to_world[1]))));
+  } else if (type == "cylinder") {
+    r.type = SHAPE_CYLINDER;
+    double radius = take_float(n, "radius", 1.0);
+    glm::dvec3 p0 = take_point(n, "p0", glm::dvec3(0.0));
+    glm::dvec3 p1 = take_point(n, "p1", glm::dvec3(0.0, 0.0, 1.0));
+    double length = glm::length(p1 - p0);
+    if (!(radius > 0.0) || !(length > 0.0))
+      fail(n.loc, describe(n), ": needs a positive radius and p0 != p1");
+    // Mitsuba: to_world * translate(p0) * to_frame(Frame(d)) * scale(r, r, length), with the
+    // frame of Duff et al. 2017 (core/frame.h).
+    glm::dvec3 d = (p1 - p0) / length;
+    Frame f = frame_from_normal(vec3(d));
+    glm::dmat4 frame(1.0);
+    frame[0] = glm::dvec4(glm::dvec3(f.s), 0.0);
+    frame[1] = glm::dvec4(glm::dvec3(f.t), 0.0);
+    frame[2] = glm::dvec4(d, 0.0);
+    glm::dmat4 m = to_world * translation(p0) * frame * scaling(glm::dvec3(radius, radius, length));
+    double world_radius = similarity_scale(n, m, false);
+    glm::dvec3 axis(m[2]);
+    if (std::abs(glm::dot(axis, glm::dvec3(m[0]))) > 1e-5 * glm::length(axis) * world_radius ||
+        std::abs(glm::dot(axis, glm::dvec3(m[1]))) > 1e-5 * glm::length(axis) * world_radius)
+      fail(n.loc, describe(n), ": to_world must not shear the cylinder");
+    set_transforms(r, m);
+    r.area = float(2.0 * PI_D * world_radius * glm::length(axis));
+  } else if (type == "shapegroup" || type == "instance") {
+    fail(n.loc, "<shape type=\"", type, "\"> cannot be nested here");
+  } else {
+    fail(n.loc, "unknown shape type \"", type,
+         "\" (supported: obj, ply, rectangle, cube, sphere, disk, cylinder, shapegroup, instance)");
+  }
+  check_consumed(n);
+  out.push_back(std::move(s));
+}
+
+void SceneBuilder::add_shapegroup(Node& g) {
+  if (group_index_.count(&g)) return;
+  PendingGroup group;
+  for (Property* p : take_objects(g, "shape")) add_shape(*p->object, group.shapes, true);
+  if (group.shapes.empty()) fail(g.loc, describe(g), " contains no shapes");
+  check_consumed(g);
+  group_index_[&g] = uint(groups_.size());
+  groups_.push_back(std::move(group));
+}
+
+void SceneBuilder::add_instance(Node& inst) {
+  glm::dmat4 to_world = take_transform(inst, "to_world");
+  std::vector<Property*> shapes = take_objects(inst, "shape");
+  if (shapes.size() != 1 || shapes[0]->object->type != "shapegroup")
+    fail(inst.loc, describe(inst), " must reference exactly one shapegroup");
+  Node& g = *shapes[0]->object;
+  add_shapegroup(g);
+  check_consumed(inst);
+  instances_.push_back({group_index_[&g], to_world});
+}
+
+void SceneBuilder::finalize_shapes(AxisBox& bounds) {
+  auto append = [&](PendingShape& s) {
+    uint index = uint(b_.shapes.size());
+    Shape& r = s.record;
+    if (r.type == SHAPE_MESH) {
+      r.first_vertex = uint(b_.positions.size());
+      r.first_index = uint(b_.indices.size());
+      for (size_t v = 0; v < s.mesh.positions.size(); ++v) {
+        b_.positions.push_back(vec4(s.mesh.positions[v], 1.0f));
+        b_.normals.push_back(s.mesh.normals.empty() ? vec4(0.0f) : vec4(s.mesh.normals[v], 0.0f));
+        b_.uvs.push_back(s.mesh.uvs.empty() ? vec2(0.0f) : vec2(s.mesh.uvs[v]));
+      }
+      b_.indices.insert(b_.indices.end(), s.mesh.indices.begin(), s.mesh.indices.end());
+    }
+    if (s.emitting) {
+      Emitter e{};
+      e.type = EMITTER_AREA;
+      e.shape = index;
+      e.texture = NO_INDEX;
+      e.radiance = vec3(s.radiance);
+      e.scale = 1.0f;
+      e.alias_offset = NO_INDEX;
+      e.alias_count = 0u;
+      store_rows(glm::dmat4(1.0), e.to_world);
+      store_rows(glm::dmat4(1.0), e.to_local);
+      if (r.type == SHAPE_MESH) {
+        // Area-proportional triangle choice within the mesh.
+        std::vector<double> areas(r.triangle_count);
+        for (size_t t = 0; t < areas.size(); ++t) areas[t] = triangle_area(s.mesh, t);
+        std::vector<AliasEntry> table;
+        try {
+          table = build_alias_table(areas);
+        } catch (const std::exception&) {
+          fail(s.emitter_loc, "the mesh carrying this area emitter has zero area");
+        }
+        e.alias_offset = uint(b_.alias.size());
+        e.alias_count = uint(table.size());
+        b_.alias.insert(b_.alias.end(), table.begin(), table.end());
+      }
+      r.emitter = uint(b_.emitters.size());
+      b_.emitters.push_back(e);
+    }
+    b_.shapes.push_back(r);
+  };
+
+  for (PendingShape& s : top_shapes_) {
+    extend_bounds(s, glm::dmat4(1.0), bounds);
+    append(s);
+  }
+  Instance top{};
+  store_rows(glm::dmat4(1.0), top.to_world);
+  store_rows(glm::dmat4(1.0), top.to_object);
+  top.first_shape = 0u;
+  top.shape_count = uint(top_shapes_.size());
+  b_.instances.push_back(top);
+
+  for (PendingGroup& g : groups_) {
+    g.first_shape = uint(b_.shapes.size());
+    for (PendingShape& s : g.shapes) append(s);
+  }
+  for (const PendingInstance& pi : instances_) {
+    const PendingGroup& g = groups_[pi.group];
+    for (const PendingShape& s : g.shapes) extend_bounds(s, pi.to_world, bounds);
+    Instance inst{};
+    store_rows(pi.to_world, inst.to_world);
+    store_rows(glm::inverse(pi.to_world), inst.to_object);
+    inst.first_shape = g.first_shape;
+    inst.shape_count = uint(g.shapes.size());
+    b_.instances.push_back(inst);
+  }
+}
+
+}  // namespace tr

@@ -1,0 +1,78 @@
+#include "scenes/load_scene.h"
+
+#include "scenes/scene_builder.h"
+
+namespace tr {
+
+SceneBuilder::SceneBuilder(ParsedScene parsed, const LoadOptions& options, const std::string& path)
+    : parsed_(std::move(parsed)), b_(scene_.buffers) {
+  scene_.path = path;
+}
+
+Scene SceneBuilder::build() {
+  b_.globals = SceneGlobals{};
+  b_.globals.environment = NO_INDEX;
+  Node& root = *parsed_.root;
+  bool have_sensor = false, have_integrator = false;
+  for (Property& p : root.props) {
+    if (p.kind != PropertyKind::Object)
+      fail(p.loc, "parameter '", p.name, "' cannot be set on <scene>");
+    p.used = true;
+    Node& o = *p.object;
+    if (o.tag == "shape") {
+      if (o.type == "shapegroup")
+        add_shapegroup(o);
+      else if (o.type == "instance")
+        add_instance(o);
+      else
+        add_shape(o, top_shapes_, false);
+    } else if (o.tag == "bsdf") {
+      material(o);
+    } else if (o.tag == "texture") {
+      texture(o, false);
+    } else if (o.tag == "emitter") {
+      add_emitter(o);
+    } else if (o.tag == "sensor") {
+      if (have_sensor) fail(o.loc, "more than one <sensor> is not supported");
+      add_sensor(o);
+      have_sensor = true;
+    } else if (o.tag == "integrator") {
+      if (have_integrator) fail(o.loc, "more than one <integrator>");
+      add_integrator(o);
+      have_integrator = true;
+    } else {
+      fail(o.loc, "<", o.tag, "> must be nested inside ",
+           o.tag == "film" || o.tag == "sampler" ? "a <sensor>" : "a <film>");
+    }
+  }
+  if (!have_sensor) fail(root.loc, "the scene has no <sensor>");
+  if (!have_integrator) {
+    Node path;  // Mitsuba's default integrator
+    path.tag = "integrator";
+    path.type = "path";
+    path.loc = root.loc;
+    add_integrator(path);
+  }
+
+  AxisBox bounds;
+  finalize_shapes(bounds);
+  if (bounds.empty()) {
+    b_.globals.bounds_center = vec3(0.0f);
+    b_.globals.bounds_radius = 0.0f;
+  } else {
+    // Bounding sphere of the box, as Mitsuba's BoundingBox::bounding_sphere.
+    glm::dvec3 center = 0.5 * (bounds.lo + bounds.hi);
+    b_.globals.bounds_center = vec3(center);
+    b_.globals.bounds_radius = float(glm::length(bounds.hi - center));
+  }
+  finalize_emitters();
+  b_.globals.instance_count = uint(b_.instances.size());
+  return std::move(scene_);
+}
+
+Scene load_scene(const std::string& xml_path, const LoadOptions& options) {
+  SceneBuilder builder(parse_scene_xml(xml_path, options), options, xml_path);
+  return builder.build();
+}
+
+}  // namespace tr

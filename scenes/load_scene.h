@@ -1,0 +1,20 @@
+// Mitsuba 3 XML scene loading: the public entry point.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace tr {
+
+struct LoadOptions {
+  std::map<std::string, std::string> defines;  // -D name=value, override <default> values
+  std::vector<std::string> search_paths;       // -a PATH, searched for files the scene names
+};
+
+// Parses and builds the scene; throws SceneError("file:line: what and why") on bad input.
+Scene load_scene(const std::string& xml_path, const LoadOptions& options);
+
+}  // namespace tr

@@ -1,0 +1,37 @@
+// Triangle meshes: loading OBJ/PLY with Mitsuba's semantics, the built-in rectangle and cube,
+// Mitsuba's angle-weighted vertex normals, and transformation into world space.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace tr {
+
+struct TriangleMesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;  // empty: no shading normals (face normals)
+  std::vector<glm::vec2> uvs;      // empty: no uvs
+  std::vector<uint32_t> indices;   // 3 per triangle
+};
+
+// Loads every triangle of an OBJ or PLY file (Assimp) into one mesh, with the file's normals
+// and uvs if it has them; uv.y = 1 - uv.y when `flip_tex_coords` (Mitsuba's OBJ default).
+// Throws std::runtime_error with a one-line reason.
+TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords);
+
+// Mitsuba `rectangle`: [-1, 1]^2 in the z = 0 plane, normal +z, uv = (p.xy + 1) / 2.
+TriangleMesh make_rectangle();
+// Mitsuba `cube`: [-1, 1]^3, 24 vertices with per-face normals and uvs, as its cube.cpp.
+TriangleMesh make_cube();
+
+// Angle-weighted vertex normals: Thürmer & Wüthrich, "Computing Vertex Normals from Polygonal
+// Facets", JGT 3(1), 1998 (the scheme Mitsuba's Mesh::recompute_vertex_normals uses).
+std::vector<glm::vec3> mesh_vertex_normals(const TriangleMesh& mesh);
+
+// Applies an affine transform: points by M, normals by M^-T (renormalised).
+void transform_mesh(TriangleMesh& mesh, const glm::dmat4& m);
+
+double triangle_area(const TriangleMesh& mesh, size_t triangle);
+
+}  // namespace tr

@@ -1,0 +1,102 @@
+// Turns the parsed Node tree into the flat records of tr::SceneBuffers. One builder per load;
+// its parts live in build_*.cpp by topic (materials and textures, shapes, emitters, sensor).
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scenes/mesh.h"
+#include "scenes/properties.h"
+#include "scenes/xml_parser.h"
+
+namespace tr {
+
+// A shape waiting for its final index: top-level shapes come first in SceneBuffers::shapes
+// (instance 0), then each shapegroup's shapes.
+struct PendingShape {
+  Shape record{};
+  TriangleMesh mesh;  // SHAPE_MESH only; world space (group space inside a shapegroup)
+  bool emitting = false;
+  glm::vec3 radiance{0.0f};
+  Location emitter_loc;
+};
+
+struct PendingGroup {
+  std::vector<PendingShape> shapes;
+  uint first_shape = 0;
+};
+
+struct AxisBox {
+  glm::dvec3 lo{1e300}, hi{-1e300};
+  void extend(glm::dvec3 p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+class SceneBuilder {
+ public:
+  SceneBuilder(ParsedScene parsed, const LoadOptions& options, const std::string& path);
+  Scene build();
+
+ private:
+  ParsedScene parsed_;
+  Scene scene_;
+  SceneBuffers& b_;
+
+  // ---- materials and textures (build_materials.cpp)
+  std::map<const Node*, uint> material_cache_;
+  std::map<std::pair<const Node*, bool>, uint> texture_cache_;
+  std::map<std::string, std::pair<uint, glm::uvec2>> texel_cache_;
+  uint default_material_ = NO_INDEX;
+  uint material(Node& bsdf);
+  uint default_material();
+  Material build_material(Node& bsdf);
+  Material build_principled(Node& bsdf);
+  // A BSDF parameter that may be a texture. `scalar`: Mitsuba reads it with eval_1 (one value).
+  TexturedValue textured(Node& owner, const std::string& name, glm::dvec3 default_value,
+                         bool scalar);
+  uint texture(Node& tex, bool scalar);
+  // Linear RGBA texels of an image file appended to texels (shared between identical loads);
+  // returns the first texel and the size.
+  std::pair<uint, glm::uvec2> load_texels(Node& owner, const std::string& file_name, bool raw,
+                                          bool scalar);
+  std::string resolve_file(Node& owner, const std::string& name, const char* what);
+
+  // ---- shapes (build_shapes.cpp)
+  std::map<std::string, TriangleMesh> mesh_cache_;  // file contents by path and uv flip
+  std::vector<PendingShape> top_shapes_;
+  std::vector<PendingGroup> groups_;
+  std::map<const Node*, uint> group_index_;
+  struct PendingInstance {
+    uint group;
+    glm::dmat4 to_world;
+  };
+  std::vector<PendingInstance> instances_;
+  void add_shape(Node& shape, std::vector<PendingShape>& out, bool in_group);
+  void add_shapegroup(Node& group);
+  void add_instance(Node& instance);
+  void finalize_shapes(AxisBox& bounds);
+
+  // ---- emitters (build_emitters.cpp)
+  struct PendingEmitter {
+    Emitter record{};
+    Location loc;
+    double mean_luminance = 0.0;  // envmap: solid-angle mean luminance of the map
+  };
+  std::vector<PendingEmitter> emitters_;  // non-area emitters, document order
+  void add_emitter(Node& emitter);
+  void finalize_emitters();
+
+  // ---- sensor, film, sampler, integrator (build_sensor.cpp)
+  void add_sensor(Node& sensor);
+  void add_integrator(Node& integrator);
+};
+
+// Row-major 3x4 rows (core/scene_types.h) of an affine transform.
+void store_rows(const glm::dmat4& m, vec4 rows[3]);
+
+}  // namespace tr

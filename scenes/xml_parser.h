@@ -1,0 +1,30 @@
+// Mitsuba 3 XML -> Node tree: <default>, $name substitution, <include>, <path>, <ref>/id,
+// typed properties (spectra converted to RGB, transforms composed), with every error reported
+// as "file:line: ...".
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scenes/load_scene.h"
+#include "scenes/properties.h"
+
+namespace tr {
+
+// Mitsuba's file resolver: directories searched in order for relative file names.
+struct FileResolver {
+  std::vector<std::filesystem::path> dirs;
+  // The first existing dir/name, else `fallback_dir`/name if that exists; empty if none.
+  std::filesystem::path resolve(const std::string& name,
+                                const std::filesystem::path& fallback_dir) const;
+};
+
+struct ParsedScene {
+  NodePtr root;  // tag "scene"
+  FileResolver resolver;
+};
+
+ParsedScene parse_scene_xml(const std::string& path, const LoadOptions& options);
+
+}  // namespace tr
