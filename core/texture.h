@@ -29,12 +29,12 @@ INLINE int texture_wrap(int i, int n, uint mode) {
 INLINE vec3 texture_texel(Texture t, int i, int j) {
   int x = texture_wrap(i, int(t.width), t.wrap_mode);
   int y = texture_wrap(j, int(t.height), t.wrap_mode);
-  return scene_texel(t.texel_offset + uint(y) * t.width + uint(x)).xyz();
+  return vec3(scene_texel(t.texel_offset + uint(y) * t.width + uint(x)));
 }
 
 INLINE vec2 texture_apply_to_uv(Texture t, vec2 uv) {
   vec3 h = vec3(uv.x, uv.y, 1.0f);
-  return vec2(dot(t.to_uv[0].xyz(), h), dot(t.to_uv[1].xyz(), h));
+  return vec2(dot(vec3(t.to_uv[0]), h), dot(vec3(t.to_uv[1]), h));
 }
 
 INLINE vec3 eval_texture(uint texture, vec2 uv) {
@@ -44,7 +44,7 @@ INLINE vec3 eval_texture(uint texture, vec2 uv) {
     // Mitsuba checkerboard: color0 where both fractional parts lie on the same side of 1/2.
     bool mx = st.x - floor(st.x) > 0.5f;
     bool my = st.y - floor(st.y) > 0.5f;
-    return mx == my ? t.color0.xyz() : t.color1.xyz();
+    return mx == my ? vec3(t.color0) : vec3(t.color1);
   }
   vec2 res = vec2(float(t.width), float(t.height));
   if (t.filter_mode == FILTER_NEAREST) {
