@@ -21,8 +21,10 @@
 #include "core/bsdf/conductor.h"
 #include "core/bsdf/dielectric.h"
 #include "core/bsdf/diffuse.h"
+#include "core/bsdf/plastic.h"
 #include "core/bsdf/roughconductor.h"
 #include "core/bsdf/roughdielectric.h"
+#include "core/bsdf/roughplastic.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -36,6 +38,10 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
       return roughconductor_flags(m, uv);
     case BSDF_ROUGHDIELECTRIC:
       return roughdielectric_flags(m, uv);
+    case BSDF_PLASTIC:
+      return plastic_flags(m, uv);
+    case BSDF_ROUGHPLASTIC:
+      return roughplastic_flags(m, uv);
     case BSDF_DIELECTRIC:
       return dielectric_flags(m, uv);
     default:
@@ -51,6 +57,10 @@ INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
       return roughconductor_eval(m, uv, wi, wo);
     case BSDF_ROUGHDIELECTRIC:
       return roughdielectric_eval(m, uv, wi, wo);
+    case BSDF_PLASTIC:
+      return plastic_eval(m, uv, wi, wo);
+    case BSDF_ROUGHPLASTIC:
+      return roughplastic_eval(m, uv, wi, wo);
     default:
       return vec3(0.0f);
   }
@@ -64,6 +74,10 @@ INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
       return roughconductor_pdf(m, uv, wi, wo);
     case BSDF_ROUGHDIELECTRIC:
       return roughdielectric_pdf(m, uv, wi, wo);
+    case BSDF_PLASTIC:
+      return plastic_pdf(m, uv, wi, wo);
+    case BSDF_ROUGHPLASTIC:
+      return roughplastic_pdf(m, uv, wi, wo);
     default:
       return 0.0f;
   }
@@ -79,6 +93,10 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       return roughconductor_sample(m, uv, wi, u1, u2);
     case BSDF_ROUGHDIELECTRIC:
       return roughdielectric_sample(m, uv, wi, u1, u2);
+    case BSDF_PLASTIC:
+      return plastic_sample(m, uv, wi, u1, u2);
+    case BSDF_ROUGHPLASTIC:
+      return roughplastic_sample(m, uv, wi, u1, u2);
     case BSDF_DIELECTRIC:
       return dielectric_sample(m, uv, wi, u1, u2);
     default:

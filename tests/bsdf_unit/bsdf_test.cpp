@@ -19,56 +19,103 @@ using namespace tr::test;
 
 struct Case {
   std::string name;
-  Material material;
-  bool reciprocal;  // f(wi, wo) = f(wo, wi) for reflection
-  bool lossless;    // reflectances 1: the albedo (in power) is 1 up to the model's own loss
+  std::function<Material()> make;  // built lazily: roughplastic tables take a while
+  bool reciprocal;                 // f(wi, wo) = f(wo, wi) for reflection
+  bool lossless;  // reflectances 1: the albedo (in power) is 1 up to the model's own loss
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 std::vector<Case> all_cases() {
   std::vector<Case> cases;
-  cases.push_back({"diffuse", diffuse(vec3(0.2f, 0.5f, 0.8f)), true, false});
-  cases.push_back({"diffuse_white", diffuse(vec3(1.0f)), true, true});
-  cases.push_back({"conductor_gold",
-                   conductor(vec3(0.143f, 0.374f, 1.442f), vec3(3.983f, 2.385f, 1.603f)), true,
-                   false});
-  cases.push_back({"conductor_mirror", conductor(vec3(0.0f), vec3(1.0f)), true, true});
-  cases.push_back({"dielectric_1.5", dielectric(1.5f), true, true});
-  cases.push_back({"dielectric_inv1.5", dielectric(1.0f / 1.5f), true, true});
-  cases.push_back({"dielectric_1.0001", dielectric(1.0001f), true, true});
+  auto add = [&](std::string name, std::function<Material()> make, bool reciprocal, bool lossless) {
+    cases.push_back({std::move(name), make, reciprocal, lossless});
+  };
   const uint kBeckmann = MATERIAL_BECKMANN;
   const uint kVisible = MATERIAL_SAMPLE_VISIBLE;
   const vec3 kGoldEta(0.143f, 0.374f, 1.442f);
   const vec3 kGoldK(3.983f, 2.385f, 1.603f);
+  add(
+      "diffuse", [] { return diffuse(vec3(0.2f, 0.5f, 0.8f)); }, true, false);
+  add(
+      "diffuse_white", [] { return diffuse(vec3(1.0f)); }, true, true);
+  add(
+      "conductor_gold", [=] { return conductor(kGoldEta, kGoldK); }, true, false);
+  add(
+      "conductor_mirror", [] { return conductor(vec3(0.0f), vec3(1.0f)); }, true, true);
+  add(
+      "dielectric_1.5", [] { return dielectric(1.5f); }, true, true);
+  add(
+      "dielectric_inv1.5", [] { return dielectric(1.0f / 1.5f); }, true, true);
+  add(
+      "dielectric_1.0001", [] { return dielectric(1.0001f); }, true, true);
   for (uint dist : {0u, kBeckmann}) {
     std::string dn = dist ? "beckmann" : "ggx";
     for (uint vis : {kVisible, 0u}) {
-      std::string vn = vis ? "_vis" : "_novis";
-      cases.push_back({"roughconductor_" + dn + vn + "_0.1",
-                       rough_conductor(dist | vis, 0.1f, 0.1f, kGoldEta, kGoldK), true, false});
-      cases.push_back({"roughconductor_" + dn + vn + "_0.5",
-                       rough_conductor(dist | vis, 0.5f, 0.5f, kGoldEta, kGoldK), true, false});
-      cases.push_back({"roughconductor_" + dn + vn + "_aniso",
-                       rough_conductor(dist | vis, 0.15f, 0.6f, kGoldEta, kGoldK), true, false});
+      std::string vn = dn + (vis ? "_vis" : "_novis");
+      uint f = dist | vis;
+      add(
+          "roughconductor_" + vn + "_0.1",
+          [=] { return rough_conductor(f, 0.1f, 0.1f, kGoldEta, kGoldK); }, true, false);
+      add(
+          "roughconductor_" + vn + "_0.5",
+          [=] { return rough_conductor(f, 0.5f, 0.5f, kGoldEta, kGoldK); }, true, false);
+      add(
+          "roughconductor_" + vn + "_aniso",
+          [=] { return rough_conductor(f, 0.15f, 0.6f, kGoldEta, kGoldK); }, true, false);
       for (float eta : {1.5f, 1.0f / 1.33f}) {
-        std::string en = eta > 1.0f ? "_1.5" : "_inv1.33";
-        cases.push_back({"roughdielectric_" + dn + vn + en + "_0.1",
-                         rough_dielectric(dist | vis, 0.1f, 0.1f, eta), true, false});
-        cases.push_back({"roughdielectric_" + dn + vn + en + "_0.6",
-                         rough_dielectric(dist | vis, 0.6f, 0.6f, eta), true, false});
-        cases.push_back({"roughdielectric_" + dn + vn + en + "_aniso",
-                         rough_dielectric(dist | vis, 0.1f, 0.4f, eta), true, false});
+        std::string en = vn + (eta > 1.0f ? "_1.5" : "_inv1.33");
+        add(
+            "roughdielectric_" + en + "_0.1", [=] { return rough_dielectric(f, 0.1f, 0.1f, eta); },
+            true, false);
+        add(
+            "roughdielectric_" + en + "_0.6", [=] { return rough_dielectric(f, 0.6f, 0.6f, eta); },
+            true, false);
+        add(
+            "roughdielectric_" + en + "_aniso",
+            [=] { return rough_dielectric(f, 0.1f, 0.4f, eta); }, true, false);
       }
     }
   }
-  Material twosided = diffuse(vec3(0.7f));
-  twosided.flags |= MATERIAL_TWOSIDED;
-  cases.push_back({"twosided_diffuse", twosided, true, false});
-  Material masked = diffuse(vec3(0.7f));
-  masked.flags |= MATERIAL_MASKED;
-  masked.opacity = constant(0.3f);
-  cases.push_back({"masked_diffuse", masked, true, false});
+  for (bool nl : {false, true}) {
+    std::string n = nl ? "_nonlinear" : "";
+    add(
+        "plastic" + n, [=] { return plastic(vec3(0.1f, 0.27f, 0.36f), 1.9f, nl); }, true, false);
+    add(
+        "plastic_white" + n, [=] { return plastic(vec3(1.0f), 1.5f, nl); }, true, false);
+    add(
+        "roughplastic_beckmann" + n,
+        [=] { return rough_plastic(kBeckmann | kVisible, 0.1f, vec3(0.5f), 1.49f, nl); }, true,
+        false);
+    add(
+        "roughplastic_ggx" + n,
+        [=] { return rough_plastic(kVisible, 0.3f, vec3(0.2f, 0.6f, 0.9f), 1.5f, nl); }, true,
+        false);
+  }
+  add(
+      "roughplastic_ggx_novis",
+      [] { return rough_plastic(0u, 0.3f, vec3(0.2f, 0.6f, 0.9f), 1.5f, false); }, true, false);
+  add(
+      "roughplastic_black",
+      [=] { return rough_plastic(kBeckmann | kVisible, 0.05f, vec3(0.0f), 1.49f, false); }, true,
+      false);
+  add(
+      "twosided_diffuse",
+      [] {
+        Material m = diffuse(vec3(0.7f));
+        m.flags |= MATERIAL_TWOSIDED;
+        return m;
+      },
+      true, false);
+  add(
+      "masked_diffuse",
+      [] {
+        Material m = diffuse(vec3(0.7f));
+        m.flags |= MATERIAL_MASKED;
+        m.opacity = constant(0.3f);
+        return m;
+      },
+      true, false);
   return cases;
 }
 
@@ -85,6 +132,7 @@ class BsdfCase : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BsdfCase, SampleAgreesWithPdfAndEval) {
   const Case& c = GetParam();
+  const Material material = c.make();
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
   int checked = 0;
@@ -92,18 +140,18 @@ TEST_P(BsdfCase, SampleAgreesWithPdfAndEval) {
     for (int i = 0; i < 2000; ++i) {
       vec3 wi = direction(cos_i, 2.0f * float(M_PI) * uni(rng));
       vec2 uv(uni(rng), uni(rng));
-      BsdfSample s = bsdf_sample(c.material, uv, wi, uni(rng), vec2(uni(rng), uni(rng)));
+      BsdfSample s = bsdf_sample(material, uv, wi, uni(rng), vec2(uni(rng), uni(rng)));
       if (s.pdf == 0.0f) {
         EXPECT_EQ(s.weight, vec3(0.0f));
         continue;
       }
       ASSERT_TRUE(is_finite(s.weight) && is_nonnegative(s.weight)) << c.name;
       ASSERT_NEAR(length(s.wo), 1.0f, 1e-4f) << c.name;
-      EXPECT_TRUE((bsdf_flags(c.material, uv) & s.lobe) != 0u) << c.name;
+      EXPECT_TRUE((bsdf_flags(material, uv) & s.lobe) != 0u) << c.name;
       EXPECT_EQ(s.eta == 1.0f, !is_transmission(wi, s.wo) || s.lobe == BSDF_NULL) << c.name;
       if (!is_smooth(s.lobe)) continue;
-      float pdf = bsdf_pdf(c.material, uv, wi, s.wo);
-      vec3 f = bsdf_eval(c.material, uv, wi, s.wo);
+      float pdf = bsdf_pdf(material, uv, wi, s.wo);
+      vec3 f = bsdf_eval(material, uv, wi, s.wo);
       EXPECT_LT(rel_diff(s.pdf, pdf), 1e-3f) << c.name << " cos " << cos_i;
       for (int k = 0; k < 3; ++k) {
         EXPECT_NEAR(s.weight[k], f[k] / pdf, 1e-3f * std::max(1.0f, s.weight[k])) << c.name;
@@ -111,21 +159,22 @@ TEST_P(BsdfCase, SampleAgreesWithPdfAndEval) {
       ++checked;
     }
   }
-  if ((bsdf_flags(c.material, vec2(0.5f)) & BSDF_SMOOTH) != 0u) {
+  if ((bsdf_flags(material, vec2(0.5f)) & BSDF_SMOOTH) != 0u) {
     EXPECT_GT(checked, 0);
   }
 }
 
 TEST_P(BsdfCase, EvalPositiveOnlyWherePdfPositive) {
   const Case& c = GetParam();
+  const Material material = c.make();
   std::mt19937 rng(12);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
   for (float cos_i : kCosines) {
     for (int i = 0; i < 2000; ++i) {
       vec3 wi = direction(cos_i, 2.0f * float(M_PI) * uni(rng));
       vec3 wo = square_to_uniform_sphere(vec2(uni(rng), uni(rng)));
-      vec3 f = bsdf_eval(c.material, vec2(0.5f), wi, wo);
-      float pdf = bsdf_pdf(c.material, vec2(0.5f), wi, wo);
+      vec3 f = bsdf_eval(material, vec2(0.5f), wi, wo);
+      float pdf = bsdf_pdf(material, vec2(0.5f), wi, wo);
       ASSERT_TRUE(is_finite(f) && is_nonnegative(f) && std::isfinite(pdf) && pdf >= 0.0f);
       if (max_component(f) > 0.0f) {
         EXPECT_GT(pdf, 0.0f) << c.name;
@@ -138,6 +187,7 @@ TEST_P(BsdfCase, EvalPositiveOnlyWherePdfPositive) {
 // E[eval / p] under uniform sphere sampling. Both estimate \int_smooth f |cos| dwo.
 TEST_P(BsdfCase, SampledAlbedoMatchesIntegratedEval) {
   const Case& c = GetParam();
+  const Material material = c.make();
   std::mt19937 rng(13);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
   const int n = 100000;
@@ -145,12 +195,12 @@ TEST_P(BsdfCase, SampledAlbedoMatchesIntegratedEval) {
     vec3 wi = direction(cos_i, 0.7f);
     double s1 = 0, s1_sq = 0, s2 = 0, s2_sq = 0;
     for (int i = 0; i < n; ++i) {
-      BsdfSample s = bsdf_sample(c.material, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng)));
+      BsdfSample s = bsdf_sample(material, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng)));
       double a = (s.pdf > 0.0f && is_smooth(s.lobe)) ? luminance(s.weight) : 0.0;
       s1 += a;
       s1_sq += a * a;
       vec3 wo = square_to_uniform_sphere(vec2(uni(rng), uni(rng)));
-      double b = luminance(bsdf_eval(c.material, vec2(0.5f), wi, wo)) / INV_FOUR_PI;
+      double b = luminance(bsdf_eval(material, vec2(0.5f), wi, wo)) / INV_FOUR_PI;
       s2 += b;
       s2_sq += b * b;
     }
@@ -164,6 +214,7 @@ TEST_P(BsdfCase, SampledAlbedoMatchesIntegratedEval) {
 // removed, never exceeds 1 — and reaches 1 for lossless models.
 TEST_P(BsdfCase, AlbedoAtMostOne) {
   const Case& c = GetParam();
+  const Material material = c.make();
   std::mt19937 rng(14);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
   const int n = 50000;
@@ -171,7 +222,7 @@ TEST_P(BsdfCase, AlbedoAtMostOne) {
     vec3 wi = direction(cos_i, 0.3f);
     double sum = 0, sum_sq = 0;
     for (int i = 0; i < n; ++i) {
-      BsdfSample s = bsdf_sample(c.material, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng)));
+      BsdfSample s = bsdf_sample(material, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng)));
       double a = max_component(s.weight) * s.eta * s.eta;
       sum += a;
       sum_sq += a * a;
@@ -180,8 +231,8 @@ TEST_P(BsdfCase, AlbedoAtMostOne) {
     double sigma = std::sqrt(std::max(sum_sq / n - mean * mean, 0.0) / n);
     EXPECT_LE(mean, 1.0 + 5.0 * sigma + 1e-5) << c.name << " cos " << cos_i;
     uint transmits =
-        bsdf_flags(c.material, vec2(0.5f)) & (BSDF_DELTA_TRANSMISSION | BSDF_GLOSSY_TRANSMISSION);
-    bool lit = cos_i > 0.0f || (c.material.flags & MATERIAL_TWOSIDED) != 0u || transmits != 0u;
+        bsdf_flags(material, vec2(0.5f)) & (BSDF_DELTA_TRANSMISSION | BSDF_GLOSSY_TRANSMISSION);
+    bool lit = cos_i > 0.0f || (material.flags & MATERIAL_TWOSIDED) != 0u || transmits != 0u;
     if (c.lossless && lit) {
       EXPECT_NEAR(mean, 1.0, 5.0 * sigma + 1e-5) << c.name << " cos " << cos_i;
     }
@@ -190,6 +241,7 @@ TEST_P(BsdfCase, AlbedoAtMostOne) {
 
 TEST_P(BsdfCase, ReflectionIsReciprocal) {
   const Case& c = GetParam();
+  const Material material = c.make();
   if (!c.reciprocal) GTEST_SKIP() << "not reciprocal in Mitsuba either";
   std::mt19937 rng(15);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
@@ -197,8 +249,8 @@ TEST_P(BsdfCase, ReflectionIsReciprocal) {
     vec3 a = square_to_cosine_hemisphere(vec2(uni(rng), uni(rng)));
     vec3 b = square_to_cosine_hemisphere(vec2(uni(rng), uni(rng)));
     if (a.z < 1e-3f || b.z < 1e-3f) continue;
-    vec3 fab = bsdf_eval(c.material, vec2(0.5f), a, b) / b.z;
-    vec3 fba = bsdf_eval(c.material, vec2(0.5f), b, a) / a.z;
+    vec3 fab = bsdf_eval(material, vec2(0.5f), a, b) / b.z;
+    vec3 fba = bsdf_eval(material, vec2(0.5f), b, a) / a.z;
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(fab[k], fba[k], 1e-3f * std::max(1.0f, fab[k])) << c.name;
     }
@@ -243,6 +295,25 @@ std::vector<Material> extreme_materials() {
     zero.param[DIELECTRIC_SPECULAR_REFLECTANCE] = constant(0.0f);
     zero.param[DIELECTRIC_SPECULAR_TRANSMITTANCE] = constant(0.0f);
     ms.push_back(zero);
+  }
+  for (float eta : {1.0001f, 1.33f, 1.5f, 2.42f, 4.0f, 1.0f / 1.5f}) {
+    for (float r : {0.0f, 1.0f}) {
+      for (bool nonlinear : {false, true}) {
+        ms.push_back(plastic(vec3(r), eta, nonlinear));
+        Material zero_specular = plastic(vec3(r), eta, nonlinear);
+        zero_specular.param[PLASTIC_SPECULAR_REFLECTANCE] = constant(0.0f);
+        zero_specular.extra = 0.0f;
+        ms.push_back(zero_specular);
+      }
+    }
+  }
+  for (float alpha : {1e-4f, 0.5f, 1.0f}) {
+    for (uint flags : {0u, 12u}) {
+      for (float eta : {1.0001f, 1.5f, 4.0f}) {
+        ms.push_back(rough_plastic(flags, alpha, vec3(1.0f), eta, true));
+        ms.push_back(rough_plastic(flags, alpha, vec3(0.0f), eta, false));
+      }
+    }
   }
   std::vector<Material> wrapped;
   for (const Material& m : ms) {
@@ -345,6 +416,27 @@ TEST(BsdfValues, DielectricChoosesByFresnel) {
   EXPECT_EQ(tir.lobe, BSDF_DELTA_REFLECTION);
   EXPECT_EQ(tir.weight, vec3(1.0f));
   EXPECT_LT(tir.wo.z, 0.0f);
+}
+
+TEST(BsdfValues, PlasticLayers) {
+  Material m = plastic(vec3(0.5f), 1.5f, false);
+  float w = 1.0f / 1.5f;  // specular sampling weight for mean(R_d) = 0.5
+  vec3 wi = direction(1.0f, 0.0f);
+  vec3 wo = direction(0.5f, 1.0f);
+  float f_o = fresnel_dielectric_reflectance(0.5f, 1.5f);
+  float fdr_int = fresnel_diffuse_reflectance(1.0f / 1.5f);
+  float expected = 0.5f / (1.0f - fdr_int) * 0.96f * (1.0f - f_o) * 0.5f / (float(M_PI) * 2.25f);
+  EXPECT_NEAR(bsdf_eval(m, vec2(0.0f), wi, wo).x, expected, 1e-6f);
+  float p_specular = 0.04f * w / (0.04f * w + 0.96f * (1.0f - w));
+  EXPECT_NEAR(bsdf_pdf(m, vec2(0.0f), wi, wo), (1.0f - p_specular) * 0.5f / float(M_PI), 1e-6f);
+  BsdfSample s = bsdf_sample(m, vec2(0.0f), wi, 0.5f * p_specular, vec2(0.5f));
+  EXPECT_EQ(s.lobe, BSDF_DELTA_REFLECTION);
+  EXPECT_NEAR(s.pdf, p_specular, 1e-6f);
+  EXPECT_NEAR(s.weight.x, 0.04f / p_specular, 1e-5f);
+  // nonlinear: R_d / (1 - R_d F_dr).
+  Material nl = plastic(vec3(0.5f), 1.5f, true);
+  EXPECT_NEAR(bsdf_eval(nl, vec2(0.0f), wi, wo).x,
+              expected * (1.0f - fdr_int) / (1.0f - 0.5f * fdr_int), 1e-6f);
 }
 
 TEST(BsdfValues, MaskPassesThrough) {

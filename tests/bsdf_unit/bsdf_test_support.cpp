@@ -1,8 +1,11 @@
 #include "bsdf_test_support.h"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "core/scene_access.h"
 
@@ -77,6 +80,48 @@ Material rough_dielectric(uint flags, float alpha_u, float alpha_v, float eta) {
   m.flags = flags;
   m.param[DIELECTRIC_ALPHA_U] = constant(alpha_u);
   m.param[DIELECTRIC_ALPHA_V] = constant(alpha_v);
+  return m;
+}
+
+Material plastic(vec3 diffuse_reflectance, float eta, bool nonlinear) {
+  Material m = make_material(BSDF_PLASTIC);
+  m.eta = eta;
+  m.flags = nonlinear ? MATERIAL_NONLINEAR : 0u;
+  m.param[PLASTIC_DIFFUSE_REFLECTANCE] = constant(diffuse_reflectance);
+  m.param[PLASTIC_SPECULAR_REFLECTANCE] = constant(1.0f);
+  float d_mean = (diffuse_reflectance.x + diffuse_reflectance.y + diffuse_reflectance.z) / 3.0f;
+  m.extra = 1.0f / (d_mean + 1.0f);
+  return m;
+}
+
+Material rough_plastic(uint flags, float alpha, vec3 diffuse_reflectance, float eta,
+                       bool nonlinear) {
+  Material m = plastic(diffuse_reflectance, eta, nonlinear);
+  m.type = BSDF_ROUGHPLASTIC;
+  m.flags |= flags;
+  m.param[PLASTIC_ALPHA] = constant(alpha);
+  // One table per (distribution, alpha, eta), as the loader would share them.
+  static std::map<std::tuple<bool, float, float>, std::pair<uint, float>> tables;
+  bool beckmann = (flags & MATERIAL_BECKMANN) != 0u;
+  auto key = std::make_tuple(beckmann, alpha, eta);
+  auto it = tables.find(key);
+  if (it == tables.end()) {
+    TestScene& scene = test_scene();
+    Texture table{};
+    table.type = TEXTURE_BITMAP;
+    table.texel_offset = uint(scene.texels.size());
+    table.width = ROUGHPLASTIC_TABLE_RES;
+    table.height = 1u;
+    for (uint j = 0; j < ROUGHPLASTIC_TABLE_RES; ++j) {
+      float t = roughplastic_external_transmittance(beckmann, alpha, eta, roughplastic_table_mu(j));
+      scene.texels.push_back(vec4(t, 0.0f, 0.0f, 0.0f));
+    }
+    scene.textures.push_back(table);
+    float r_int = roughplastic_internal_reflectance(beckmann, alpha, eta);
+    it = tables.emplace(key, std::make_pair(uint(scene.textures.size() - 1), r_int)).first;
+  }
+  m.param[ROUGHPLASTIC_TABLE].texture = it->second.first;
+  m.param[ROUGHPLASTIC_TABLE].value = vec3(it->second.second);
   return m;
 }
 

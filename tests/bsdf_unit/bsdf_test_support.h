@@ -31,5 +31,10 @@ Material dielectric(float eta);
 // Microfacet models: `flags` takes MATERIAL_BECKMANN / MATERIAL_SAMPLE_VISIBLE.
 Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec3 k);
 Material rough_dielectric(uint flags, float alpha_u, float alpha_v, float eta);
+// Plastics: Material.extra gets Mitsuba's specular sampling weight 1 / (mean(R_d) + 1).
+Material plastic(vec3 diffuse_reflectance, float eta, bool nonlinear);
+// Builds the transmittance table as a texture of test_scene(), as the loader does.
+Material rough_plastic(uint flags, float alpha, vec3 diffuse_reflectance, float eta,
+                       bool nonlinear);
 
 }  // namespace tr::test

@@ -135,6 +135,12 @@ TEST(Fresnel, DiffuseReflectanceFits) {
     double ref = diffuse_reflectance_reference(eta);
     EXPECT_NEAR(fresnel_diffuse_reflectance(float(eta)), ref, 0.006 * ref) << eta;
   }
+  // Below eta = 0.5 through reciprocity with d'Eon & Irving's fit.
+  for (double eta : {1.0 / 2.42, 1.0 / 4.0, 1.0 / 8.0}) {
+    double ref = diffuse_reflectance_reference(eta);
+    EXPECT_NEAR(fresnel_diffuse_reflectance(float(eta)), ref, 1e-3) << eta;
+    EXPECT_LT(fresnel_diffuse_reflectance(float(eta)), 1.0f);
+  }
 }
 
 }  // namespace
