@@ -439,6 +439,38 @@ TEST(BsdfValues, PlasticLayers) {
               expected * (1.0f - fdr_int) / (1.0f - 0.5f * fdr_int), 1e-6f);
 }
 
+// Parameters come through eval_textured: a checkerboard switches them across uv.
+TEST(BsdfValues, TexturedParameters) {
+  TestScene& scene = test_scene();
+  Texture checker{};
+  checker.type = TEXTURE_CHECKERBOARD;
+  checker.color0 = vec4(0.2f, 0.2f, 0.2f, 1.0f);
+  checker.color1 = vec4(0.8f, 0.4f, 0.1f, 1.0f);
+  checker.to_uv[0] = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+  checker.to_uv[1] = vec4(0.0f, 1.0f, 0.0f, 0.0f);
+  uint index = uint(scene.textures.size());
+  scene.textures.push_back(checker);
+  Material m = diffuse(vec3(0.5f));
+  m.param[DIFFUSE_REFLECTANCE].texture = index;
+  vec3 wi = direction(0.8f, 0.0f);
+  BsdfSample s0 = bsdf_sample(m, vec2(0.25f, 0.25f), wi, 0.5f, vec2(0.5f));
+  BsdfSample s1 = bsdf_sample(m, vec2(0.75f, 0.25f), wi, 0.5f, vec2(0.5f));
+  EXPECT_NEAR(distance(s0.weight, vec3(0.2f)), 0.0f, 1e-6f);
+  EXPECT_NEAR(distance(s1.weight, vec3(0.8f, 0.4f, 0.1f)), 0.0f, 1e-6f);
+  // Scalar parameters read a texture as its luminance (Mitsuba's eval_1).
+  Material rough = rough_conductor(0u, 0.1f, 0.1f, vec3(0.0f), vec3(1.0f));
+  rough.param[CONDUCTOR_ALPHA_U].texture = index;
+  rough.param[CONDUCTOR_ALPHA_V].texture = index;
+  Material ref = rough_conductor(0u, 0.2f, 0.2f, vec3(0.0f), vec3(1.0f));
+  vec3 wo = direction(0.7f, 3.0f);
+  EXPECT_NEAR(bsdf_eval(rough, vec2(0.25f), wi, wo).x, bsdf_eval(ref, vec2(0.25f), wi, wo).x,
+              1e-5f);
+  float lum = luminance(vec3(0.8f, 0.4f, 0.1f));
+  Material ref1 = rough_conductor(0u, lum, lum, vec3(0.0f), vec3(1.0f));
+  EXPECT_NEAR(bsdf_eval(rough, vec2(0.75f, 0.25f), wi, wo).x,
+              bsdf_eval(ref1, vec2(0.75f, 0.25f), wi, wo).x, 1e-5f);
+}
+
 TEST(BsdfValues, MaskPassesThrough) {
   Material m = diffuse(vec3(0.5f));
   m.flags |= MATERIAL_MASKED;
