@@ -25,6 +25,7 @@
 #include "core/bsdf/roughconductor.h"
 #include "core/bsdf/roughdielectric.h"
 #include "core/bsdf/roughplastic.h"
+#include "core/bsdf/thindielectric.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -44,6 +45,8 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
       return roughplastic_flags(m, uv);
     case BSDF_DIELECTRIC:
       return dielectric_flags(m, uv);
+    case BSDF_THINDIELECTRIC:
+      return thindielectric_flags(m, uv);
     default:
       return 0u;
   }
@@ -99,6 +102,8 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       return roughplastic_sample(m, uv, wi, u1, u2);
     case BSDF_DIELECTRIC:
       return dielectric_sample(m, uv, wi, u1, u2);
+    case BSDF_THINDIELECTRIC:
+      return thindielectric_sample(m, uv, wi, u1, u2);
     default:
       return bsdf_sample_failed();
   }

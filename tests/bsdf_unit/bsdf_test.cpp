@@ -291,6 +291,7 @@ std::vector<Material> extreme_materials() {
   }
   for (float eta : kEtas) {
     ms.push_back(dielectric(eta));
+    ms.push_back(thin_dielectric(eta));
     Material zero = dielectric(eta);
     zero.param[DIELECTRIC_SPECULAR_REFLECTANCE] = constant(0.0f);
     zero.param[DIELECTRIC_SPECULAR_TRANSMITTANCE] = constant(0.0f);
@@ -469,6 +470,23 @@ TEST(BsdfValues, TexturedParameters) {
   Material ref1 = rough_conductor(0u, lum, lum, vec3(0.0f), vec3(1.0f));
   EXPECT_NEAR(bsdf_eval(rough, vec2(0.75f, 0.25f), wi, wo).x,
               bsdf_eval(ref1, vec2(0.75f, 0.25f), wi, wo).x, 1e-5f);
+}
+
+TEST(BsdfValues, ThinDielectricSlab) {
+  Material m = thin_dielectric(1.5f);
+  // Normal incidence: R = 0.04, R' = 2R / (1 + R).
+  float r = 0.08f / 1.04f;
+  vec3 wi = direction(-1.0f, 0.0f);
+  BsdfSample s = bsdf_sample(m, vec2(0.0f), wi, 0.5f * r, vec2(0.5f));
+  EXPECT_EQ(s.lobe, BSDF_DELTA_REFLECTION);
+  EXPECT_NEAR(s.pdf, r, 1e-6f);
+  EXPECT_EQ(s.weight, vec3(1.0f));
+  EXPECT_NEAR(s.wo.z, -1.0f, 1e-6f);
+  BsdfSample t = bsdf_sample(m, vec2(0.0f), wi, 0.5f, vec2(0.5f));
+  EXPECT_EQ(t.lobe, BSDF_NULL);
+  EXPECT_EQ(t.wo, -wi);
+  EXPECT_NEAR(t.pdf, 1.0f - r, 1e-6f);
+  EXPECT_EQ(t.eta, 1.0f);
 }
 
 TEST(BsdfValues, MaskPassesThrough) {

@@ -65,6 +65,12 @@ Material dielectric(float eta) {
   return m;
 }
 
+Material thin_dielectric(float eta) {
+  Material m = dielectric(eta);
+  m.type = BSDF_THINDIELECTRIC;
+  return m;
+}
+
 Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec3 k) {
   Material m = conductor(eta, k);
   m.type = BSDF_ROUGHCONDUCTOR;

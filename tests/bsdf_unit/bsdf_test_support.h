@@ -28,6 +28,7 @@ vec3 direction(float cos_theta, float phi);
 Material diffuse(vec3 reflectance);
 Material conductor(vec3 eta, vec3 k);
 Material dielectric(float eta);
+Material thin_dielectric(float eta);
 // Microfacet models: `flags` takes MATERIAL_BECKMANN / MATERIAL_SAMPLE_VISIBLE.
 Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec3 k);
 Material rough_dielectric(uint flags, float alpha_u, float alpha_v, float eta);
