@@ -40,6 +40,13 @@ Emitter blank_emitter(uint type) {
 }  // namespace
 
 void SceneBuilder::add_emitter(Node& n) {
+  if (n.type == "constant" || n.type == "envmap") {
+    for (const PendingEmitter& other : emitters_)
+      if (other.record.type == EMITTER_CONSTANT || other.record.type == EMITTER_ENVMAP)
+        fail(n.loc,
+             "only one environment emitter (constant or envmap) is allowed; another one is at ",
+             to_string(other.loc));
+  }
   PendingEmitter pe;
   pe.loc = n.loc;
   Emitter& e = pe.record;
@@ -129,13 +136,6 @@ void SceneBuilder::add_emitter(Node& n) {
   } else {
     fail(n.loc, "unknown emitter type \"", n.type,
          "\" (supported: area, point, directional, constant, envmap)");
-  }
-  if (e.type == EMITTER_CONSTANT || e.type == EMITTER_ENVMAP) {
-    for (const PendingEmitter& other : emitters_)
-      if (other.record.type == EMITTER_CONSTANT || other.record.type == EMITTER_ENVMAP)
-        fail(n.loc,
-             "only one environment emitter (constant or envmap) is allowed; another one is at ",
-             to_string(other.loc));
   }
   check_consumed(n);
   emitters_.push_back(pe);

@@ -1,0 +1,164 @@
+// Bad input: every error is a SceneError whose message is one line, "file:line: ...", naming
+// the line of the offending element.
+#include <gtest/gtest.h>
+
+#include "scene_test_files.h"
+
+namespace tr {
+namespace {
+
+using namespace testing_files;
+
+// Loads `xml` from a fresh folder (with a valid quad.obj beside it) and returns the error.
+std::string error_of(const std::string& xml, const LoadOptions& options = {}) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "quad.obj", QUAD_OBJ);
+  std::string path = write_file(dir, "scene.xml", xml);
+  try {
+    load_scene(path, options);
+  } catch (const SceneError& e) {
+    std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind(path + ":", 0), 0u) << message;
+    return message.substr(path.size());
+  }
+  ADD_FAILURE() << "no SceneError for:\n" << xml;
+  return "";
+}
+
+// Line of the first occurrence of `marker` in the scene_xml(body) text.
+int line_of(const std::string& body, const std::string& marker) {
+  std::string xml = scene_xml(body);
+  size_t at = xml.find(marker);
+  return 1 + int(std::count(xml.begin(), xml.begin() + at, '\n'));
+}
+
+void expect_error(const std::string& body, const std::string& marker, const std::string& words,
+                  const LoadOptions& options = {}) {
+  std::string e = error_of(scene_xml(body), options);
+  std::string prefix = ":" + std::to_string(line_of(body, marker)) + ": ";
+  EXPECT_EQ(e.rfind(prefix, 0), 0u) << "expected line " << prefix << " in: " << e;
+  EXPECT_NE(e.find(words), std::string::npos) << "expected \"" << words << "\" in: " << e;
+}
+
+TEST(SceneErrors, MalformedXml) {
+  std::string e = error_of("<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n\n</scene>\n");
+  EXPECT_NE(e.find("malformed XML"), std::string::npos) << e;
+  EXPECT_EQ(e.rfind(":4: ", 0), 0u) << e;
+  e = error_of("<scene version=\"3.0.0\">\n<float name=\"x\" value=\"1\"\n</scene>");
+  EXPECT_NE(e.find("malformed XML"), std::string::npos) << e;
+}
+
+TEST(SceneErrors, UnknownPlugins) {
+  expect_error("\n<shape type=\"teapot\"/>", "teapot", "unknown shape type \"teapot\"");
+  expect_error("\n<shape type=\"sphere\">\n<bsdf type=\"velvet\"/></shape>", "velvet",
+               "unknown BSDF type \"velvet\"");
+  expect_error("\n\n<emitter type=\"spot\"/>", "spot", "unknown emitter type");
+  expect_error("<integrator type=\"volpath\"/>", "volpath", "unknown integrator type");
+  expect_error("\n<medium type=\"homogeneous\"/>", "medium", "unsupported element <medium>");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<texture name=\"reflectance\" "
+      "type=\"noise\"/></bsdf></shape>",
+      "noise", "unknown texture type");
+}
+
+TEST(SceneErrors, UnknownOrUnusedParameters) {
+  expect_error(
+      "<shape type=\"sphere\">\n<float name=\"radius\" value=\"1\"/>\n"
+      "<float name=\"radiuss\" value=\"2\"/></shape>",
+      "radiuss", "unused parameter 'radiuss'");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<float name=\"alpha\" "
+      "value=\"0.1\"/></bsdf></shape>",
+      "alpha", "unused parameter 'alpha'");
+  expect_error("\n<shape type=\"sphere\" colour=\"red\"/>", "colour",
+               "unexpected attribute 'colour'");
+  expect_error("\n<float name=\"scale\" value=\"2\"/>", "scale", "cannot be set on <scene>");
+}
+
+TEST(SceneErrors, WrongTypesAndValues) {
+  expect_error("<shape type=\"sphere\">\n<string name=\"radius\" value=\"1\"/></shape>", "radius",
+               "must be a float");
+  expect_error("<shape type=\"sphere\">\n<float name=\"radius\" value=\"NaN\"/></shape>", "NaN",
+               "not a finite number");
+  expect_error("<shape type=\"sphere\">\n<float name=\"radius\" value=\"inf\"/></shape>", "inf",
+               "not a finite number");
+  expect_error("<shape type=\"sphere\">\n<float name=\"radius\" value=\"1.0x\"/></shape>", "1.0x",
+               "cannot parse");
+  expect_error("<shape type=\"sphere\">\n<point name=\"center\" value=\"1 2\"/></shape>", "center",
+               "expected 3 values");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<rgb name=\"reflectance\" "
+      "value=\"0.5 nan 0.5\"/></bsdf></shape>",
+      "reflectance", "not a finite number");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" "
+      "value=\"glas\"/></bsdf></shape>",
+      "glas", "unknown int_ior \"glas\"");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"conductor\">\n<string name=\"material\" "
+      "value=\"Unobtainium\"/></bsdf></shape>",
+      "Unobtainium", "unknown conductor material");
+  expect_error(
+      "<shape type=\"sphere\"><transform name=\"to_world\">\n<rotate angle=\"3\"/>"
+      "</transform></shape>",
+      "rotate", "axis is zero");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<spectrum name=\"reflectance\" "
+      "value=\"500:1, 400:2\"/></bsdf></shape>",
+      "spectrum", "strictly increasing");
+  expect_error("<shape type=\"sphere\">\n<boolean name=\"flip_normals\" value=\"yes\"/></shape>",
+               "yes", "expected \"true\" or \"false\"");
+}
+
+TEST(SceneErrors, MissingFiles) {
+  expect_error("<shape type=\"obj\">\n<string name=\"filename\" value=\"missing.obj\"/></shape>",
+               "missing.obj", "mesh file \"missing.obj\" not found");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\"><texture name=\"reflectance\" "
+      "type=\"bitmap\">\n<string name=\"filename\" value=\"nope.png\"/></texture></bsdf></shape>",
+      "nope.png", "image file \"nope.png\" not found");
+  expect_error("\n<include filename=\"other.xml\"/>", "include", "file \"other.xml\" not found");
+  expect_error("\n<path value=\"no/such/folder\"/>", "path", "not found");
+  expect_error("<shape type=\"obj\">\n<string name=\"filename\" value=\"scene.xml\"/></shape>",
+               "scene.xml", "scene.xml");  // not a mesh: Assimp's reason, on the filename line
+}
+
+TEST(SceneErrors, References) {
+  expect_error("<shape type=\"sphere\">\n<ref id=\"nothing\"/></shape>", "nothing",
+               "no object with this id");
+  expect_error("<bsdf type=\"diffuse\" id=\"a\"/>\n<bsdf id=\"a\" type=\"diffuse\"/>",
+               "id=\"a\" type", "duplicate id \"a\"");
+  expect_error("<shape type=\"sphere\">\n<float name=\"radius\" value=\"$r\"/></shape>", "$r",
+               "undefined parameter $r");
+}
+
+TEST(SceneErrors, StructuralRules) {
+  expect_error(
+      "<shape type=\"shapegroup\" id=\"g\"><shape type=\"sphere\">\n<emitter "
+      "type=\"area\"/></shape></shape>",
+      "emitter", "emitters inside a <shapegroup>");
+  expect_error(
+      "<emitter type=\"constant\"/>\n<emitter type=\"envmap\"><string name=\"filename\" "
+      "value=\"x.exr\"/></emitter>",
+      "envmap", "only one environment emitter");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"twosided\"><bsdf type=\"diffuse\"/>\n"
+      "<bsdf type=\"conductor\"/></bsdf></shape>",
+      "conductor", "different front and back BSDFs");
+  expect_error("\n<emitter type=\"area\"/>", "area", "must be nested inside a <shape>");
+  expect_error(
+      "<integrator type=\"path\">\n<integer name=\"max_depth\" value=\"-2\"/></integrator>",
+      "max_depth", "max_depth must be -1");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"principled\">\n<float name=\"eta\" value=\"1.5\"/>"
+      "<float name=\"specular\" value=\"0.5\"/></bsdf></shape>",
+      "eta", "either 'eta' or 'specular'");
+  EXPECT_NE(
+      error_of("<scene version=\"3.0.0\"><shape type=\"sphere\"/></scene>").find("no <sensor>"),
+      std::string::npos);
+  EXPECT_NE(error_of("<scene><shape type=\"sphere\"/></scene>").find("version"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tr

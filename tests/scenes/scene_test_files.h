@@ -1,0 +1,46 @@
+// Scratch scene files for the loader tests: each test writes its XML (and meshes) into a
+// fresh folder under the GoogleTest temp dir.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scenes/load_scene.h"
+
+namespace tr::testing_files {
+
+inline std::filesystem::path fresh_dir() {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "twinray_scene_tests" /
+                              (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline std::string write_file(const std::filesystem::path& dir, const std::string& name,
+                              const std::string& text) {
+  std::filesystem::path p = dir / name;
+  std::filesystem::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+// A minimal valid scene around `body` (a sensor is mandatory).
+inline std::string scene_xml(const std::string& body) {
+  return "<scene version=\"3.0.0\">\n"
+         "  <sensor type=\"perspective\">\n"
+         "    <film type=\"hdrfilm\"><integer name=\"width\" value=\"8\"/>"
+         "<integer name=\"height\" value=\"8\"/></film>\n"
+         "  </sensor>\n" +
+         body + "\n</scene>\n";
+}
+
+const char* const QUAD_OBJ =
+    "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+
+}  // namespace tr::testing_files

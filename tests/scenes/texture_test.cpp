@@ -1,0 +1,128 @@
+// core/texture.h on the host, against hand-computed lookups, and the loader's image decoding.
+#include "core/texture.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "scene_test_files.h"
+#include "scenes/bitmap.h"
+
+namespace tr {
+
+// The scene accessors core/texture.h reads, over one SceneBuffers (the test's own scene).
+static const SceneBuffers* g_buffers = nullptr;
+Texture scene_texture(uint i) { return g_buffers->textures[i]; }
+vec4 scene_texel(uint i) { return g_buffers->texels[i]; }
+
+namespace {
+
+using namespace testing_files;
+
+// A 2x2 bitmap, texels a b (top row) / c d (bottom row).
+SceneBuffers two_by_two(uint filter, uint wrap) {
+  SceneBuffers b;
+  b.texels = {vec4(1, 0, 0, 1), vec4(0, 1, 0, 1), vec4(0, 0, 1, 1), vec4(1, 1, 1, 1)};
+  Texture t{};
+  t.type = TEXTURE_BITMAP;
+  t.filter_mode = filter;
+  t.wrap_mode = wrap;
+  t.width = t.height = 2;
+  t.to_uv[0] = vec4(1, 0, 0, 0);
+  t.to_uv[1] = vec4(0, 1, 0, 0);
+  b.textures.push_back(t);
+  return b;
+}
+
+void expect_vec(vec3 a, vec3 b) {
+  EXPECT_NEAR(a.x, b.x, 1e-6);
+  EXPECT_NEAR(a.y, b.y, 1e-6);
+  EXPECT_NEAR(a.z, b.z, 1e-6);
+}
+
+TEST(Texture, BilinearLookup) {
+  SceneBuffers b = two_by_two(FILTER_BILINEAR, WRAP_REPEAT);
+  g_buffers = &b;
+  expect_vec(eval_texture(0, vec2(0.25f, 0.25f)), vec3(1, 0, 0));  // texel centre, top left
+  expect_vec(eval_texture(0, vec2(0.75f, 0.75f)), vec3(1, 1, 1));  // bottom right
+  expect_vec(eval_texture(0, vec2(0.5f, 0.25f)), vec3(0.5f, 0.5f, 0));
+  expect_vec(eval_texture(0, vec2(0.5f, 0.5f)), vec3(0.5f, 0.5f, 0.5f));
+  // Repeat: at uv = 0 the four neighbours are the four (wrapped) corners.
+  expect_vec(eval_texture(0, vec2(0.0f, 0.0f)), vec3(0.5f, 0.5f, 0.5f));
+  expect_vec(eval_texture(0, vec2(1.25f, -0.75f)), vec3(1, 0, 0));
+}
+
+TEST(Texture, WrapModes) {
+  SceneBuffers clamp = two_by_two(FILTER_BILINEAR, WRAP_CLAMP);
+  g_buffers = &clamp;
+  expect_vec(eval_texture(0, vec2(0.0f, 0.0f)), vec3(1, 0, 0));
+  expect_vec(eval_texture(0, vec2(3.0f, 0.25f)), vec3(0, 1, 0));
+  SceneBuffers mirror = two_by_two(FILTER_NEAREST, WRAP_MIRROR);
+  g_buffers = &mirror;
+  // Texel columns for x = -2..3 under mirroring: 1 0 | 0 1 | 1 0.
+  expect_vec(eval_texture(0, vec2(-0.75f, 0.25f)), vec3(0, 1, 0));
+  expect_vec(eval_texture(0, vec2(-0.25f, 0.25f)), vec3(1, 0, 0));
+  expect_vec(eval_texture(0, vec2(1.25f, 0.25f)), vec3(0, 1, 0));
+  expect_vec(eval_texture(0, vec2(1.75f, 0.25f)), vec3(1, 0, 0));
+  SceneBuffers nearest = two_by_two(FILTER_NEAREST, WRAP_REPEAT);
+  g_buffers = &nearest;
+  expect_vec(eval_texture(0, vec2(0.49f, 0.51f)), vec3(0, 0, 1));
+  expect_vec(eval_texture(0, vec2(-0.49f, 0.51f)), vec3(1, 1, 1));
+}
+
+TEST(Texture, CheckerboardAndTexturedValues) {
+  SceneBuffers b;
+  Texture t{};
+  t.type = TEXTURE_CHECKERBOARD;
+  t.color0 = vec4(1, 0, 0, 1);
+  t.color1 = vec4(0, 0, 1, 1);
+  t.to_uv[0] = vec4(2, 0, 0, 0);
+  t.to_uv[1] = vec4(0, 2, 0, 0);
+  b.textures.push_back(t);
+  g_buffers = &b;
+  expect_vec(eval_texture(0, vec2(0.1f, 0.1f)), vec3(1, 0, 0));  // both fractions < 1/2
+  expect_vec(eval_texture(0, vec2(0.3f, 0.1f)), vec3(0, 0, 1));
+  expect_vec(eval_texture(0, vec2(0.3f, 0.3f)), vec3(1, 0, 0));
+  expect_vec(eval_texture(0, vec2(0.6f, 0.1f)), vec3(1, 0, 0));
+  TexturedValue constant{vec3(0.25f), NO_INDEX};
+  expect_vec(eval_textured(constant, vec2(0.3f, 0.1f)), vec3(0.25f));
+  TexturedValue textured{vec3(0.0f), 0u};
+  expect_vec(eval_textured(textured, vec2(0.3f, 0.1f)), vec3(0, 0, 1));
+}
+
+TEST(Texture, ImagesLoadTopRowFirstAndSrgbDecoded) {
+  std::filesystem::path dir = fresh_dir();
+  std::string png = (dir / "image.png").string();
+  // 2x2, top row red | green, bottom row 128-grey | white.
+  const unsigned char pixels[] = {255, 0, 0, 0, 255, 0, 128, 128, 128, 255, 255, 255};
+  auto out = OIIO::ImageOutput::create(png);
+  ASSERT_TRUE(out);
+  OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+  ASSERT_TRUE(out->open(png, spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+
+  float grey = srgb_to_linear(128.0f / 255.0f);
+  EXPECT_NEAR(grey, 0.2158605, 1e-6);  // IEC 61966-2-1
+  Image image = load_image(png, false);
+  EXPECT_EQ(image.texels[0], glm::vec4(1, 0, 0, 1));
+  EXPECT_NEAR(image.texels[2].x, grey, 1e-6);
+  Image raw = load_image(png, true);
+  EXPECT_NEAR(raw.texels[2].x, 128.0f / 255.0f, 1e-6);
+
+  std::string xml = write_file(
+      dir, "scene.xml",
+      scene_xml("<shape type=\"sphere\"><bsdf type=\"diffuse\"><texture name=\"reflectance\" "
+                "type=\"bitmap\"><string name=\"filename\" value=\"image.png\"/>"
+                "<string name=\"filter_type\" value=\"nearest\"/></texture></bsdf></shape>"));
+  Scene s = load_scene(xml, {});
+  g_buffers = &s.buffers;
+  uint tex = s.buffers.materials[0].param[0].texture;
+  ASSERT_NE(tex, NO_INDEX);
+  // v = 0.25 is the top row (Mitsuba: v -> rows, row 0 = top of the image).
+  expect_vec(eval_texture(tex, vec2(0.25f, 0.25f)), vec3(1, 0, 0));
+  expect_vec(eval_texture(tex, vec2(0.75f, 0.25f)), vec3(0, 1, 0));
+  expect_vec(eval_texture(tex, vec2(0.25f, 0.75f)), vec3(grey));
+}
+
+}  // namespace
+}  // namespace tr
