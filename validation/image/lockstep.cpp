@@ -1,0 +1,87 @@
+#include "validation/image/lockstep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "validation/image/statistics.h"
+
+namespace tr {
+
+LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
+                                const LockstepOptions& options) {
+  check_same_size(a, "first image", b, "second image");
+  if (options.block < 2) throw std::invalid_argument("lockstep block size must be at least 2");
+  LockstepResult r;
+  r.pixels = a.pixel_count();
+  r.excess_map.resize(r.pixels);
+  std::vector<LockstepPixel> all(r.pixels);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      LockstepPixel& p = all[size_t(y) * a.width + x];
+      p.x = x;
+      p.y = y;
+      for (int c = 0; c < 3; ++c) {
+        p.a[c] = a.at(x, y, c);
+        p.b[c] = b.at(x, y, c);
+        double d = std::fabs(p.a[c] - p.b[c]);
+        double tolerance =
+            options.rel * std::max(std::fabs(p.a[c]), std::fabs(p.b[c])) + options.abs;
+        p.excess = std::max(p.excess, d / tolerance);
+        r.max_abs_difference = std::max(r.max_abs_difference, d);
+      }
+      r.excess_map[size_t(y) * a.width + x] = float(p.excess);
+      if (p.excess > 1.0) ++r.pixels_outside;
+    }
+  r.fraction_within = double(r.pixels - r.pixels_outside) / double(r.pixels);
+  size_t worst_n = std::min(all.size(), size_t(std::max(options.worst_count, 0)));
+  std::partial_sort(
+      all.begin(), all.begin() + worst_n, all.end(),
+      [](const LockstepPixel& p, const LockstepPixel& q) { return p.excess > q.excess; });
+  r.worst.assign(all.begin(), all.begin() + worst_n);
+
+  const int B = options.block, n = B * B;
+  r.cells_x = a.width / B;
+  r.cells_y = a.height / B;
+  r.block_alpha = sidak_alpha(options.family_alpha, 3.0 * r.cells_x * r.cells_y);
+  std::vector<LockstepBlock> flagged;
+  for (int cy = 0; cy < r.cells_y; ++cy)
+    for (int cx = 0; cx < r.cells_x; ++cx) {
+      bool cell_flagged = false;
+      for (int c = 0; c < 3; ++c) {
+        auto difference = [&](int i) {
+          int x = cx * B + i % B, y = cy * B + i / B;
+          return a.at(x, y, c) - b.at(x, y, c);
+        };
+        LockstepBlock blk;
+        blk.x = cx;
+        blk.y = cy;
+        blk.channel = c;
+        for (int i = 0; i < n; ++i) blk.mean_difference += difference(i) / n;
+        double s2 = 0.0;  // two-pass sample variance
+        for (int i = 0; i < n; ++i)
+          s2 += std::pow(difference(i) - blk.mean_difference, 2) / (n - 1);
+        double standard_error = std::sqrt(s2 / n);
+        if (standard_error > 0.0) {
+          blk.t = blk.mean_difference / standard_error;
+          blk.p = student_two_sided_p(blk.t, n - 1);
+        } else if (blk.mean_difference != 0.0) {
+          blk.t = std::copysign(INFINITY, blk.mean_difference);
+          blk.p = 0.0;
+        }
+        if (blk.p <= r.block_alpha && std::fabs(blk.mean_difference) > options.abs) {
+          cell_flagged = true;
+          flagged.push_back(blk);
+        }
+      }
+      if (cell_flagged) ++r.systematic_cells;
+    }
+  std::sort(flagged.begin(), flagged.end(),
+            [](const LockstepBlock& p, const LockstepBlock& q) { return p.p < q.p; });
+  if (flagged.size() > worst_n) flagged.resize(worst_n);
+  r.worst_blocks = flagged;
+  r.passed = r.fraction_within >= options.required_fraction && r.systematic_cells == 0;
+  return r;
+}
+
+}  // namespace tr

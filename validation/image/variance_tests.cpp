@@ -1,0 +1,292 @@
+#include "validation/image/variance_tests.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "validation/image/statistics.h"
+
+namespace tr {
+
+void srgb_to_xyz_mitsuba(const double rgb[3], double xyz[3]) {
+  static const double m[3][3] = {{0.412453, 0.357580, 0.180423},
+                                 {0.212671, 0.715160, 0.072169},
+                                 {0.019334, 0.119193, 0.950227}};
+  for (int i = 0; i < 3; ++i) xyz[i] = m[i][0] * rgb[0] + m[i][1] * rgb[1] + m[i][2] * rgb[2];
+}
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+RgbImage to_xyz(const RgbImage& rgb) {
+  RgbImage xyz = rgb;
+  for (size_t i = 0; i < rgb.pixel_count(); ++i)
+    srgb_to_xyz_mitsuba(&rgb.rgb[3 * i], &xyz.rgb[3 * i]);
+  return xyz;
+}
+
+RgbImage to_clamped_xyz_variance(const RgbImage& rgb, double min_variance) {
+  RgbImage xyz = to_xyz(rgb);
+  for (double& v : xyz.rgb) v = std::max(v, min_variance);
+  return xyz;
+}
+
+// A grid of non-overlapping cells of w x h pixels; partial cells at the borders are dropped.
+struct Cells {
+  int w = 1, h = 1;
+  double pixels() const { return double(w) * h; }
+};
+
+Cells square_cells(int block) { return {block, block}; }
+
+RgbImage cell_means(const RgbImage& img, Cells cells) {
+  RgbImage out;
+  out.width = img.width / cells.w;
+  out.height = img.height / cells.h;
+  out.rgb.assign(3 * out.pixel_count(), 0.0);
+  for (int by = 0; by < out.height; ++by)
+    for (int bx = 0; bx < out.width; ++bx)
+      for (int c = 0; c < 3; ++c) {
+        double sum = 0.0;
+        for (int y = 0; y < cells.h; ++y)
+          for (int x = 0; x < cells.w; ++x) sum += img.at(bx * cells.w + x, by * cells.h + y, c);
+        out.at(bx, by, c) = sum / cells.pixels();
+      }
+  return out;
+}
+
+RgbImage filled_like(const RgbImage& shape, double value) {
+  RgbImage out = shape;
+  std::fill(out.rgb.begin(), out.rgb.end(), value);
+  return out;
+}
+
+// Per (cell, channel): difference of means, variance of that difference, degrees of freedom.
+struct Differences {
+  RgbImage delta, variance, dof;
+};
+
+HypothesisTestResult evaluate(const std::string& name, int block, const Differences& d,
+                              double alpha, double required_fraction) {
+  HypothesisTestResult r;
+  r.name = name;
+  r.block = block;
+  r.cells_x = d.delta.width;
+  r.cells_y = d.delta.height;
+  r.alpha = alpha;
+  r.required_fraction = required_fraction;
+  r.values = 3 * d.delta.pixel_count();
+  r.statistic_map.assign(d.delta.pixel_count(), 0.0f);
+  for (int y = 0; y < r.cells_y; ++y)
+    for (int x = 0; x < r.cells_x; ++x) {
+      bool cell_fails = false;
+      for (int c = 0; c < 3; ++c) {
+        double statistic = std::fabs(d.delta.at(x, y, c)) / std::sqrt(d.variance.at(x, y, c));
+        if (std::isnan(statistic))
+          throw std::invalid_argument(name + ": NaN test statistic at cell (" + std::to_string(x) +
+                                      ", " + std::to_string(y) +
+                                      "): the images hold NaN or negative variances");
+        double p = student_two_sided_p(statistic, d.dof.at(x, y, c));
+        if (p <= alpha) {
+          ++r.failing_values;
+          cell_fails = true;
+        }
+        if (p < r.min_p || r.min_p_x < 0) {
+          r.min_p = p;
+          r.min_p_x = x;
+          r.min_p_y = y;
+          r.min_p_channel = c;
+        }
+        r.max_statistic = std::max(r.max_statistic, statistic);
+        float& shown = r.statistic_map[size_t(y) * r.cells_x + x];
+        shown = std::max(shown, float(statistic));
+      }
+      if (cell_fails) ++r.failing_cells;
+    }
+  double passing = double(r.values - r.failing_values);
+  r.passed = r.values > 0 && passing >= required_fraction * double(r.values);
+  return r;
+}
+
+// The gain rule (see variance_tests.h): per channel, Z = Σ w (d - E0[d | r]) / sqrt(Σ w² v)
+// with w = r / v, where E0[r d] = `bias` is the covariance the regressor r shares with d
+// through their common noise; E0[w d] = bias / v is subtracted.
+HypothesisTestResult gain_test(const std::string& name, const RgbImage& d, const RgbImage& v,
+                               const RgbImage& r, const RgbImage& bias, double family_alpha) {
+  double numerator[3] = {0, 0, 0}, information[3] = {0, 0, 0};
+  for (size_t i = 0; i < d.rgb.size(); ++i) {
+    numerator[i % 3] += (r.rgb[i] * d.rgb[i] - bias.rgb[i]) / v.rgb[i];
+    information[i % 3] += r.rgb[i] * r.rgb[i] / v.rgb[i];
+  }
+  Differences combined;
+  combined.delta = RgbImage{1, 1, {0.0, 0.0, 0.0}};
+  combined.variance = combined.delta;
+  for (int c = 0; c < 3; ++c) {
+    combined.delta.rgb[c] = numerator[c];
+    combined.variance.rgb[c] = information[c];
+  }
+  combined.dof = filled_like(combined.delta, kInfinity);
+  HypothesisTestResult result =
+      evaluate(name, d.width, combined, sidak_alpha(family_alpha, 3.0), 1.0);
+  // The estimated gain per channel, k - 1 = numerator / information, for the report.
+  for (int c = 0; c < 3; ++c)
+    result.gain[c] = information[c] > 0.0 ? 1.0 + numerator[c] / information[c] : 1.0;
+  return result;
+}
+
+void check_inputs(const RgbImage& img, const std::vector<const RgbImage*>& others,
+                  const std::vector<double>& spps) {
+  for (const RgbImage* o : others) check_same_size(img, "image", *o, "comparison input");
+  for (double spp : spps)
+    if (!(spp > 0.0) || std::isinf(spp))
+      throw std::invalid_argument("sample counts must be positive and finite");
+}
+
+}  // namespace
+
+HypothesisTestResult pixel_z_test(const RgbImage& img, double spp, const RgbImage& ref,
+                                  const RgbImage& ref_variance,
+                                  const VarianceTestOptions& options) {
+  check_inputs(img, {&ref, &ref_variance}, {spp});
+  Differences d;
+  d.delta = to_xyz(img);
+  RgbImage ref_xyz = to_xyz(ref);
+  d.variance = to_clamped_xyz_variance(ref_variance, options.min_variance);
+  for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
+    d.delta.rgb[i] -= ref_xyz.rgb[i];
+    d.variance.rgb[i] /= spp;  // z = |img - ref| sqrt(spp / var)
+  }
+  d.dof = filled_like(d.delta, kInfinity);
+  return evaluate("pixel_z", 1, d, sidak_alpha(options.family_alpha, double(img.pixel_count())),
+                  options.pass_fraction);
+}
+
+namespace {
+
+// README test 2 on cells of any shape: variance of a cell mean mean_cell(var (1/spp +
+// 1/ref_spp)) / (pixels per cell).
+HypothesisTestResult cell_z_test(const std::string& name, Cells cells, const RgbImage& img,
+                                 double spp, const RgbImage& ref, const RgbImage& ref_variance,
+                                 double ref_spp, const VarianceTestOptions& options) {
+  check_inputs(img, {&ref, &ref_variance}, {spp, ref_spp});
+  if (img.width < cells.w || img.height < cells.h)
+    throw std::invalid_argument("image smaller than one block");
+  Differences d;
+  d.delta = cell_means(to_xyz(img), cells);
+  RgbImage ref_mean = cell_means(to_xyz(ref), cells);
+  d.variance = cell_means(to_clamped_xyz_variance(ref_variance, options.min_variance), cells);
+  for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
+    d.delta.rgb[i] -= ref_mean.rgb[i];
+    d.variance.rgb[i] *= (1.0 / spp + 1.0 / ref_spp) / cells.pixels();
+  }
+  d.dof = filled_like(d.delta, kInfinity);
+  double values = 3.0 * double(d.delta.pixel_count());
+  return evaluate(name, cells.w, d, sidak_alpha(options.family_alpha, values), 1.0);
+}
+
+}  // namespace
+
+HypothesisTestResult block_z_test(const RgbImage& img, double spp, const RgbImage& ref,
+                                  const RgbImage& ref_variance, double ref_spp,
+                                  const VarianceTestOptions& options) {
+  if (options.block < 1) throw std::invalid_argument("block size must be positive");
+  return cell_z_test("block_z", square_cells(options.block), img, spp, ref, ref_variance, ref_spp,
+                     options);
+}
+
+HypothesisTestResult gain_z_test(const RgbImage& img, double spp, const RgbImage& ref,
+                                 const RgbImage& ref_variance, double ref_spp,
+                                 const VarianceTestOptions& options) {
+  check_inputs(img, {&ref, &ref_variance}, {spp, ref_spp});
+  RgbImage d = to_xyz(img), r = to_xyz(ref), v = to_xyz(ref_variance), bias = v;
+  for (size_t i = 0; i < d.rgb.size(); ++i) {
+    d.rgb[i] -= r.rgb[i];
+    // d contains the reference's noise with a minus sign: E0[r d] = -var / ref_spp.
+    bias.rgb[i] = -std::max(v.rgb[i], 0.0) / ref_spp;
+    v.rgb[i] = std::max(v.rgb[i], options.min_variance) * (1.0 / spp + 1.0 / ref_spp);
+  }
+  return gain_test("gain_z", d, v, r, bias, options.family_alpha);
+}
+
+namespace {
+
+// Welch's t-test for means of na and nb samples with per-sample variances va and vb.
+void welch(double va, double na, double vb, double nb, double* variance, double* dof) {
+  double sa = va / na, sb = vb / nb;
+  *variance = sa + sb;
+  *dof = (sa + sb) * (sa + sb) / (sa * sa / (na - 1.0) + sb * sb / (nb - 1.0));
+}
+
+Differences welch_differences(Cells cells, const RgbImage& a, const RgbImage& a_variance,
+                              double a_spp, const RgbImage& b, const RgbImage& b_variance,
+                              double b_spp, double min_variance) {
+  Differences d;
+  d.delta = cell_means(to_xyz(a), cells);
+  RgbImage b_mean = cell_means(to_xyz(b), cells);
+  RgbImage va = cell_means(to_clamped_xyz_variance(a_variance, min_variance), cells);
+  RgbImage vb = cell_means(to_clamped_xyz_variance(b_variance, min_variance), cells);
+  d.variance = d.delta;
+  d.dof = d.delta;
+  const double samples_per_cell = cells.pixels();
+  for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
+    d.delta.rgb[i] -= b_mean.rgb[i];
+    welch(va.rgb[i], samples_per_cell * a_spp, vb.rgb[i], samples_per_cell * b_spp,
+          &d.variance.rgb[i], &d.dof.rgb[i]);
+  }
+  return d;
+}
+
+HypothesisTestResult welch_test(const std::string& name, Cells cells, const RgbImage& a,
+                                const RgbImage& a_variance, double a_spp, const RgbImage& b,
+                                const RgbImage& b_variance, double b_spp, double alpha,
+                                double required_fraction, double min_variance) {
+  if (!(a_spp > 1.0 && b_spp > 1.0))
+    throw std::invalid_argument("Welch's test needs more than one sample per pixel on each side");
+  Differences d =
+      welch_differences(cells, a, a_variance, a_spp, b, b_variance, b_spp, min_variance);
+  return evaluate(name, cells.w, d, alpha, required_fraction);
+}
+
+}  // namespace
+
+HypothesisTestResult pixel_welch_test(const RgbImage& a, const RgbImage& a_variance, double a_spp,
+                                      const RgbImage& b, const RgbImage& b_variance, double b_spp,
+                                      const VarianceTestOptions& options) {
+  check_inputs(a, {&a_variance, &b, &b_variance}, {a_spp, b_spp});
+  return welch_test("pixel_welch", square_cells(1), a, a_variance, a_spp, b, b_variance, b_spp,
+                    sidak_alpha(options.family_alpha, double(a.pixel_count())),
+                    options.pass_fraction, options.min_variance);
+}
+
+HypothesisTestResult block_welch_test(const RgbImage& a, const RgbImage& a_variance, double a_spp,
+                                      const RgbImage& b, const RgbImage& b_variance, double b_spp,
+                                      const VarianceTestOptions& options) {
+  check_inputs(a, {&a_variance, &b, &b_variance}, {a_spp, b_spp});
+  const int block = options.block;
+  if (block < 1 || a.width < block || a.height < block)
+    throw std::invalid_argument("image smaller than one block");
+  double cells = double(a.width / block) * double(a.height / block);
+  return welch_test("block_welch", square_cells(block), a, a_variance, a_spp, b, b_variance, b_spp,
+                    sidak_alpha(options.family_alpha, 3.0 * cells), 1.0, options.min_variance);
+}
+
+HypothesisTestResult gain_welch_test(const RgbImage& a, const RgbImage& a_variance, double a_spp,
+                                     const RgbImage& b, const RgbImage& b_variance, double b_spp,
+                                     const VarianceTestOptions& options) {
+  check_inputs(a, {&a_variance, &b, &b_variance}, {a_spp, b_spp});
+  RgbImage d = to_xyz(a), r = d, b_xyz = to_xyz(b), va = to_xyz(a_variance),
+           vb = to_xyz(b_variance), v = va, bias = va;
+  for (size_t i = 0; i < d.rgb.size(); ++i) {
+    d.rgb[i] -= b_xyz.rgb[i];
+    r.rgb[i] = 0.5 * (r.rgb[i] + b_xyz.rgb[i]);
+    // E0[(a + b)/2 (a - b)] = (Var a - Var b) / 2 for the means' noise.
+    bias.rgb[i] = 0.5 * (std::max(va.rgb[i], 0.0) / a_spp - std::max(vb.rgb[i], 0.0) / b_spp);
+    v.rgb[i] = std::max(va.rgb[i], options.min_variance) / a_spp +
+               std::max(vb.rgb[i], options.min_variance) / b_spp;
+  }
+  return gain_test("gain_welch", d, v, r, bias, options.family_alpha);
+}
+
+}  // namespace tr
