@@ -80,6 +80,8 @@ void SceneBuilder::add_emitter(Node& n) {
       fail(find_property(n, "mis_compensation")->loc, describe(n),
            ": mis_compensation is not supported");
     glm::dmat4 to_world = take_transform(n, "to_world");
+    if (glm::determinant(glm::dmat3(to_world)) == 0.0)
+      fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
     store_rows(to_world, e.to_world);
     store_rows(glm::inverse(to_world), e.to_local);
     auto [offset, size] = load_texels(n, file, false, false);

@@ -208,8 +208,10 @@ void SceneBuilder::add_integrator(Node& n) {
     long long shading = take_integer(m, "shading_samples", 1);
     long long emitter = take_integer(m, "emitter_samples", shading);
     long long bsdf = take_integer(m, "bsdf_samples", shading);
-    if (shading < 0 || emitter < 0 || bsdf < 0 || emitter + bsdf == 0)
-      fail(m.loc, describe(m), ": sample counts must be >= 0 and not both zero");
+    const long long limit = 1 << 20;
+    if (shading < 0 || emitter < 0 || bsdf < 0 || emitter + bsdf == 0 || emitter > limit ||
+        bsdf > limit)
+      fail(m.loc, describe(m), ": sample counts must be in [0, 2^20] and not both zero");
     it.emitter_samples = uint(emitter);
     it.bsdf_samples = uint(bsdf);
   } else if (m.type == "moment") {

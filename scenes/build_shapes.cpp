@@ -222,6 +222,8 @@ void SceneBuilder::add_shapegroup(Node& g) {
 
 void SceneBuilder::add_instance(Node& inst) {
   glm::dmat4 to_world = take_transform(inst, "to_world");
+  if (glm::determinant(glm::dmat3(to_world)) == 0.0)
+    fail(find_property(inst, "to_world")->loc, describe(inst), ": to_world is singular");
   std::vector<Property*> shapes = take_objects(inst, "shape");
   if (shapes.size() != 1 || shapes[0]->object->type != "shapegroup")
     fail(inst.loc, describe(inst), " must reference exactly one shapegroup");

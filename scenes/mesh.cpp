@@ -54,9 +54,16 @@ TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
     throw std::runtime_error("only some parts of the mesh have vertex normals");
   if (any_uvs && !all_uvs)
     throw std::runtime_error("only some parts of the mesh have texture coordinates");
+  auto finite = [](glm::vec3 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
   for (const glm::vec3& p : mesh.positions)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::runtime_error("vertex position is NaN or infinite");
+    if (!finite(p)) throw std::runtime_error("a vertex position is NaN or infinite");
+  for (const glm::vec3& n : mesh.normals)
+    if (!finite(n)) throw std::runtime_error("a vertex normal is NaN or infinite");
+  for (const glm::vec2& t : mesh.uvs)
+    if (!finite(glm::vec3(t, 0.0f)))
+      throw std::runtime_error("a texture coordinate is NaN or infinite");
   return mesh;
 }
 

@@ -325,6 +325,14 @@ class Parser {
           parse_doubles(required_attr(x, "value", src), 3, true, loc, "rgb '" + p.name + "'");
       p.kind = PropertyKind::Color;
       p.vec = glm::dvec3(v[0], v[1], v[2]);
+      // Mitsuba's srgb texture rejects reflectance-like colors outside [0, 1] (emitter values
+      // and eta/k/int_ior/ext_ior are unbounded).
+      bool unbounded = within_emitter || p.name == "eta" || p.name == "k" || p.name == "int_ior" ||
+                       p.name == "ext_ior";
+      if (!unbounded && (glm::any(glm::lessThan(p.vec, glm::dvec3(0.0))) ||
+                         glm::any(glm::greaterThan(p.vec, glm::dvec3(1.0)))))
+        fail(loc, "rgb '", p.name, "' = (", v[0], ", ", v[1], ", ", v[2],
+             ") must lie in [0, 1]: it is a reflectance-like value (Mitsuba rejects it too)");
     } else if (tag == "spectrum") {
       check_attributes(x, src, {"name", "value", "filename"});
       no_children(x, src);

@@ -107,6 +107,10 @@ TEST(SceneErrors, WrongTypesAndValues) {
       "<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<spectrum name=\"reflectance\" "
       "value=\"500:1, 400:2\"/></bsdf></shape>",
       "spectrum", "strictly increasing");
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<rgb name=\"reflectance\" "
+      "value=\"1.5\"/></bsdf></shape>",
+      "1.5", "must lie in [0, 1]");
   expect_error("<shape type=\"sphere\">\n<boolean name=\"flip_normals\" value=\"yes\"/></shape>",
                "yes", "expected \"true\" or \"false\"");
 }
@@ -158,6 +162,48 @@ TEST(SceneErrors, StructuralRules) {
       error_of("<scene version=\"3.0.0\"><shape type=\"sphere\"/></scene>").find("no <sensor>"),
       std::string::npos);
   EXPECT_NE(error_of("<scene><shape type=\"sphere\"/></scene>").find("version"), std::string::npos);
+}
+
+// Never crash on bad input: every truncation and many single-character corruptions of a scene
+// that uses most features either load or fail with a SceneError.
+TEST(SceneErrors, CorruptedScenesFailCleanly) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "quad.obj", QUAD_OBJ);
+  const std::string body =
+      "<default name=\"spp\" value=\"4\"/>\n"
+      "<integrator type=\"moment\"><integrator type=\"path\">"
+      "<integer name=\"max_depth\" value=\"3\"/></integrator></integrator>\n"
+      "<bsdf type=\"roughconductor\" id=\"metal\"><float name=\"alpha\" value=\"0.2\"/>"
+      "<string name=\"material\" value=\"Cu\"/></bsdf>\n"
+      "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/><ref id=\"metal\"/>"
+      "<transform name=\"to_world\"><rotate x=\"1\" angle=\"30\"/><scale value=\"2\"/>"
+      "</transform></shape>\n"
+      "<shape type=\"sphere\"><bsdf type=\"principled\"><texture name=\"metallic\" "
+      "type=\"checkerboard\"><float name=\"color0\" value=\"0.1\"/></texture></bsdf></shape>\n"
+      "<shape type=\"rectangle\"><emitter type=\"area\"><spectrum name=\"radiance\" "
+      "value=\"400:1, 700:2\"/></emitter></shape>\n"
+      "<emitter type=\"point\"><point name=\"position\" x=\"1\" y=\"2\" z=\"3\"/></emitter>\n";
+  const std::string xml = scene_xml(body);
+  ASSERT_NO_THROW(load_scene(write_file(dir, "good.xml", xml), {}));
+  int loaded = 0, rejected = 0;
+  auto attempt = [&](const std::string& text) {
+    std::string path = write_file(dir, "bad.xml", text);
+    try {
+      load_scene(path, {});
+      ++loaded;
+    } catch (const SceneError& e) {
+      std::string m = e.what();
+      EXPECT_EQ(m.rfind(path + ":", 0), 0u) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+      ++rejected;
+    }
+  };
+  for (size_t cut = 0; cut < xml.size(); cut += 7) attempt(xml.substr(0, cut));
+  const char replacements[] = {'x', '"', '<', '>', '/', '-', '9', ' ', '$', ','};
+  for (size_t i = 0; i < xml.size(); i += 5)
+    attempt(xml.substr(0, i) + replacements[i % sizeof(replacements)] + xml.substr(i + 1));
+  EXPECT_GT(rejected, 100);
+  EXPECT_GT(loaded, 0);
 }
 
 }  // namespace
