@@ -80,7 +80,7 @@ glm::dmat4 rotation(glm::dvec3 axis, double degrees) {
 
 class Parser {
  public:
-  explicit Parser(const LoadOptions& options) : params_(options.defines) {
+  explicit Parser(const LoadOptions& options) : params_(options.defines), defines_(options.defines) {
     for (const std::string& p : options.search_paths) resolver_.dirs.push_back(fs::path(p));
   }
 
@@ -93,11 +93,17 @@ class Parser {
     auto root = std::make_shared<Node>();
     root->tag = "scene";
     parse_file(path, path, *root, 0, true);
+    // As Mitsuba: a -D value that no $name uses is an error (probably a typo).
+    for (const auto& [name, value] : defines_)
+      if (!used_.count(name))
+        fail(root->loc, "-D ", name, "=", value, " is not used: the scene has no $", name);
     return {root, resolver_};
   }
 
  private:
   std::map<std::string, std::string> params_;
+  std::map<std::string, std::string> defines_;
+  std::set<std::string> used_;  // names substituted at least once
   FileResolver resolver_;
   std::map<std::string, NodePtr> ids_;
   int unnamed_ = 0;
@@ -151,6 +157,7 @@ class Parser {
         fail(src.at(x), "undefined parameter $", key, " (give it with -D ", key,
              "=... or a <default name=\"", key, "\" .../>)");
       out += it->second;
+      used_.insert(key);
       i = j - 1;
     }
     return out;

@@ -135,6 +135,10 @@ TEST(SceneErrors, References) {
                "id=\"a\" type", "duplicate id \"a\"");
   expect_error("<shape type=\"sphere\">\n<float name=\"radius\" value=\"$r\"/></shape>", "$r",
                "undefined parameter $r");
+  LoadOptions typo;
+  typo.defines["sp"] = "4";
+  std::string e = error_of(scene_xml("<default name=\"spp\" value=\"1\"/>"), typo);
+  EXPECT_NE(e.find("-D sp=4 is not used"), std::string::npos) << e;
 }
 
 TEST(SceneErrors, StructuralRules) {
