@@ -14,8 +14,8 @@ using Mat3 = std::array<Vec3, 3>;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Exponents and redistribution constants of the paper: q_c = 0.7 (eq. 9), p_c = 0.4,
-// p_t = 0.95 (eq. 10), q_f = 0.5 (eq. 13).
+// Exponents and redistribution constants of the paper: q_c = 0.7 (colour), p_c = 0.4,
+// p_t = 0.95 (error redistribution), q_f = 0.5 (features).
 constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95, kQf = 0.5;
 
 // Linear sRGB → XYZ (D65), the exact rational form of the IEC 61966-2-1 matrix used by the
@@ -49,7 +49,7 @@ const Mat3 kXyzToRgb = inverse(kRgbToXyz);
 const Vec3 kWhite = mul(kRgbToXyz, {1.0, 1.0, 1.0});  // D65 white of the RGB cube
 
 // YyCxCz, the linearised CIELAB opponent space of Zhang & Wandell ("A spatial extension of
-// CIELAB for digital color image reproduction", 1997), §4.1 of the FLIP paper.
+// CIELAB for digital color image reproduction", 1997), FLIP's opponent space for spatial filtering.
 Vec3 xyz_to_ycxcz(const Vec3& xyz) {
   double x = xyz[0] / kWhite[0], y = xyz[1] / kWhite[1], z = xyz[2] / kWhite[2];
   return {116.0 * y - 16.0, 500.0 * (x - y), 200.0 * (y - z)};
@@ -70,11 +70,11 @@ Vec3 xyz_to_lab(const Vec3& xyz) {
   return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
 }
 
-// Hunt adjustment (§4.1, eq. 7): chroma scaled by 0.01 L*, so that colours lose chromatic
-// difference as they darken.
+// Hunt adjustment (FLIP, after Hunt's effect): chroma scaled by 0.01 L*, so that colours lose
+// chromatic difference as they darken.
 Vec3 hunt(const Vec3& lab) { return {lab[0], 0.01 * lab[0] * lab[1], 0.01 * lab[0] * lab[2]}; }
 
-// HyAB distance (Abasi, Tehran & Fairchild 2020; §4.1, eq. 8): |ΔL| + ||(Δa, Δb)||.
+// HyAB distance (Abasi, Tehran & Fairchild 2020), FLIP's colour distance: |ΔL| + ||(Δa, Δb)||.
 double hyab(const Vec3& p, const Vec3& q) {
   return std::fabs(p[0] - q[0]) + std::hypot(p[1] - q[1], p[2] - q[2]);
 }
@@ -112,8 +112,9 @@ Plane filter(const Plane& in, const std::vector<double>& kx, const std::vector<d
   return out;
 }
 
-// Contrast sensitivity functions as sums of Gaussians (§4.1, eq. 5, Table 1 of the paper,
-// after Johnson & Fairchild 2003): S(x) = Σ_i a_i sqrt(π / b_i) exp(-π² x² / b_i), x in degrees.
+// Contrast sensitivity functions as sums of Gaussians (the paper's CSF
+// constants, after Johnson & Fairchild 2003): S(x) = Σ_i a_i sqrt(π / b_i) exp(-π² x² / b_i), x in
+// degrees.
 struct Csf {
   double a1, b1, a2, b2;
 };
@@ -153,10 +154,11 @@ Plane csf_filter(const Plane& in, const Csf& csf, double ppd) {
   return out;
 }
 
-// Edge and point detectors (§4.2): first and second derivatives of a Gaussian with
-// sigma = 0.5 w ppd, w = 0.082 degrees (eq. 12), radius ceil(3 sigma). The 2D kernels
-// d(x) g(y) are normalised so their positive weights sum to 1 and their negative weights to -1;
-// since g(y) does not change sign, this normalises d and g separately.
+// Edge and point detectors (feature pipeline): first and second derivatives of a Gaussian with
+// sigma = 0.5 w ppd, w = 0.082 degrees (peak-to-trough width of human edge detection), radius
+// ceil(3 sigma). The 2D kernels d(x) g(y) are normalised so their positive weights sum to 1 and
+// their negative weights to -1; since g(y) does not change sign, this normalises d and g
+// separately.
 struct FeatureKernels {
   std::vector<double> edge, point, smooth;
 };
@@ -187,7 +189,7 @@ FeatureKernels feature_kernels(double ppd) {
   return k;
 }
 
-// Magnitudes of the edge and point responses, ||(f_x, f_y)|| (eq. 13's ||∇ · ||).
+// Magnitudes of the edge and point responses, ||(f_x, f_y)||.
 void feature_magnitudes(const Plane& y, const FeatureKernels& k, Plane* edges, Plane* points) {
   Plane ex = filter(y, k.edge, k.smooth), ey = filter(y, k.smooth, k.edge);
   Plane px = filter(y, k.point, k.smooth), py = filter(y, k.smooth, k.point);
@@ -199,7 +201,7 @@ void feature_magnitudes(const Plane& y, const FeatureKernels& k, Plane* edges, P
   }
 }
 
-// Both images after the colour pipeline's spatial filtering (§4.1): clamp to [0, 1], to
+// Both images after the colour pipeline's spatial filtering: clamp to [0, 1], to
 // YyCxCz, CSF-filter each channel, back to linear RGB, clamp to the RGB cube, to Hunt-adjusted
 // L*a*b*. Also returns the unfiltered normalised luminance used by the feature pipeline,
 // (Yy + 16) / 116 = Y / Y_white.
@@ -251,7 +253,7 @@ FlipResult ldr_flip(const RgbImage& test, const RgbImage& reference, double pixe
   prepare(reference, pixels_per_degree, &lab_ref, &y_ref);
   prepare(test, pixels_per_degree, &lab_test, &y_test);
 
-  // Colour difference (eqs. 8-10): HyAB^q_c, redistributed so that errors up to p_c c_max map
+  // Colour difference: HyAB^q_c, redistributed so that errors up to p_c c_max map
   // linearly to [0, p_t] and the rest to (p_t, 1]; c_max is the exponentiated HyAB distance
   // between Hunt-adjusted green and blue, the largest in the RGB cube.
   const double cmax =
@@ -269,12 +271,12 @@ FlipResult ldr_flip(const RgbImage& test, const RgbImage& reference, double pixe
     double e = std::pow(hyab(lab_ref[i], lab_test[i]), kQc);
     double color =
         e < pccmax ? kPt / pccmax * e : kPt + (e - pccmax) / (cmax - pccmax) * (1.0 - kPt);
-    // Feature difference (eq. 13): the larger of the edge and point magnitude differences,
+    // Feature difference: the larger of the edge and point magnitude differences,
     // scaled by 1/sqrt(2) and raised to q_f.
     double f = std::max(std::fabs(edges_ref.v[i] - edges_test.v[i]),
                         std::fabs(points_ref.v[i] - points_test.v[i]));
     double feature = std::pow(f / std::sqrt(2.0), kQf);
-    r.map[i] = float(std::pow(color, 1.0 - feature));  // eq. 11
+    r.map[i] = float(std::pow(color, 1.0 - feature));  // FLIP = ΔE_c^(1 - ΔE_f)
   }
 
   std::vector<float> sorted = r.map;

@@ -1,13 +1,13 @@
 // LDR-FLIP (Andersson, Nilsson, Akenine-Möller, Oskarsson, Åström & Fairchild, "FLIP: A
 // Difference Evaluator for Alternating Images", Proc. ACM Comput. Graph. Interact. Tech. 3(2),
-// HPG 2020). Section numbers below refer to that paper.
+// HPG 2020). Comments name the paper's steps; the constants are the paper's.
 //
 // Inputs are linear RGB images; they are clamped to [0, 1], which is what FLIP sees after
-// decoding an 8-bit-range sRGB image (§4: LDR images in sRGB). Both pipelines of the paper are
-// implemented in full: the colour pipeline (§4.1: CSF filtering in YyCxCz, clamp to the RGB
+// decoding an 8-bit-range sRGB image (LDR-FLIP takes sRGB images). Both pipelines of the paper are
+// implemented in full: the colour pipeline (CSF filtering in YyCxCz, clamp to the RGB
 // cube, L*a*b*, Hunt adjustment, HyAB distance, error redistribution) and the feature
-// pipeline (§4.2: edge and point detection on the achromatic channel), combined per pixel as
-// ΔE = ΔE_c^(1 - ΔE_f) (eq. 11 of the paper). Image borders are handled by replicating the
+// pipeline (edge and point detection on the achromatic channel), combined per pixel as
+// ΔE = ΔE_c^(1 - ΔE_f). Image borders are handled by replicating the
 // edge pixels, as in the authors' reference implementation.
 #pragma once
 
@@ -18,7 +18,7 @@
 namespace tr {
 
 // Pixels per degree of visual angle for the paper's default observer: a 0.7 m wide monitor
-// with 3840 pixels per row viewed from 0.7 m (§5), ppd = d (r / w) π / 180 ≈ 67.02.
+// with 3840 pixels per row viewed from 0.7 m, ppd = d (r / w) π / 180 ≈ 67.02.
 double flip_default_pixels_per_degree();
 
 struct FlipResult {

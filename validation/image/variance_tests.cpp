@@ -33,26 +33,19 @@ RgbImage to_clamped_xyz_variance(const RgbImage& rgb, double min_variance) {
   return xyz;
 }
 
-// A grid of non-overlapping cells of w x h pixels; partial cells at the borders are dropped.
-struct Cells {
-  int w = 1, h = 1;
-  double pixels() const { return double(w) * h; }
-};
-
-Cells square_cells(int block) { return {block, block}; }
-
-RgbImage cell_means(const RgbImage& img, Cells cells) {
+// Averages over non-overlapping block x block cells; partial cells at the borders are dropped.
+RgbImage block_means(const RgbImage& img, int block) {
   RgbImage out;
-  out.width = img.width / cells.w;
-  out.height = img.height / cells.h;
+  out.width = img.width / block;
+  out.height = img.height / block;
   out.rgb.assign(3 * out.pixel_count(), 0.0);
   for (int by = 0; by < out.height; ++by)
     for (int bx = 0; bx < out.width; ++bx)
       for (int c = 0; c < 3; ++c) {
         double sum = 0.0;
-        for (int y = 0; y < cells.h; ++y)
-          for (int x = 0; x < cells.w; ++x) sum += img.at(bx * cells.w + x, by * cells.h + y, c);
-        out.at(bx, by, c) = sum / cells.pixels();
+        for (int y = 0; y < block; ++y)
+          for (int x = 0; x < block; ++x) sum += img.at(bx * block + x, by * block + y, c);
+        out.at(bx, by, c) = sum / (block * block);
       }
   return out;
 }
@@ -110,9 +103,10 @@ HypothesisTestResult evaluate(const std::string& name, int block, const Differen
   return r;
 }
 
-// The gain rule (see variance_tests.h): per channel, Z = Σ w (d - E0[d | r]) / sqrt(Σ w² v)
-// with w = r / v, where E0[r d] = `bias` is the covariance the regressor r shares with d
-// through their common noise; E0[w d] = bias / v is subtracted.
+// The gain rule (see variance_tests.h): per channel, with weights w = r / v,
+// Z = (Σ w d - Σ bias / v) / sqrt(Σ w² v), where bias = E0[r d] is the covariance that the
+// regressor r shares with d through their common noise, so that E0[Z] = 0 and Var0[Z] = 1.
+// (Σ w d - Σ bias / v) / Σ w² v estimates k - 1.
 HypothesisTestResult gain_test(const std::string& name, const RgbImage& d, const RgbImage& v,
                                const RgbImage& r, const RgbImage& bias, double family_alpha) {
   double numerator[3] = {0, 0, 0}, information[3] = {0, 0, 0};
@@ -163,37 +157,25 @@ HypothesisTestResult pixel_z_test(const RgbImage& img, double spp, const RgbImag
                   options.pass_fraction);
 }
 
-namespace {
-
-// README test 2 on cells of any shape: variance of a cell mean mean_cell(var (1/spp +
-// 1/ref_spp)) / (pixels per cell).
-HypothesisTestResult cell_z_test(const std::string& name, Cells cells, const RgbImage& img,
-                                 double spp, const RgbImage& ref, const RgbImage& ref_variance,
-                                 double ref_spp, const VarianceTestOptions& options) {
-  check_inputs(img, {&ref, &ref_variance}, {spp, ref_spp});
-  if (img.width < cells.w || img.height < cells.h)
-    throw std::invalid_argument("image smaller than one block");
-  Differences d;
-  d.delta = cell_means(to_xyz(img), cells);
-  RgbImage ref_mean = cell_means(to_xyz(ref), cells);
-  d.variance = cell_means(to_clamped_xyz_variance(ref_variance, options.min_variance), cells);
-  for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
-    d.delta.rgb[i] -= ref_mean.rgb[i];
-    d.variance.rgb[i] *= (1.0 / spp + 1.0 / ref_spp) / cells.pixels();
-  }
-  d.dof = filled_like(d.delta, kInfinity);
-  double values = 3.0 * double(d.delta.pixel_count());
-  return evaluate(name, cells.w, d, sidak_alpha(options.family_alpha, values), 1.0);
-}
-
-}  // namespace
-
 HypothesisTestResult block_z_test(const RgbImage& img, double spp, const RgbImage& ref,
                                   const RgbImage& ref_variance, double ref_spp,
                                   const VarianceTestOptions& options) {
-  if (options.block < 1) throw std::invalid_argument("block size must be positive");
-  return cell_z_test("block_z", square_cells(options.block), img, spp, ref, ref_variance, ref_spp,
-                     options);
+  check_inputs(img, {&ref, &ref_variance}, {spp, ref_spp});
+  const int block = options.block;
+  if (block < 1 || img.width < block || img.height < block)
+    throw std::invalid_argument("image smaller than one block");
+  Differences d;
+  d.delta = block_means(to_xyz(img), block);
+  RgbImage ref_mean = block_means(to_xyz(ref), block);
+  d.variance = block_means(to_clamped_xyz_variance(ref_variance, options.min_variance), block);
+  for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
+    d.delta.rgb[i] -= ref_mean.rgb[i];
+    // Variance of a block mean: mean_block(var (1/spp + 1/ref_spp)) / block².
+    d.variance.rgb[i] *= (1.0 / spp + 1.0 / ref_spp) / (block * block);
+  }
+  d.dof = filled_like(d.delta, kInfinity);
+  double values = 3.0 * double(d.delta.pixel_count());
+  return evaluate("block_z", block, d, sidak_alpha(options.family_alpha, values), 1.0);
 }
 
 HypothesisTestResult gain_z_test(const RgbImage& img, double spp, const RgbImage& ref,
@@ -219,17 +201,17 @@ void welch(double va, double na, double vb, double nb, double* variance, double*
   *dof = (sa + sb) * (sa + sb) / (sa * sa / (na - 1.0) + sb * sb / (nb - 1.0));
 }
 
-Differences welch_differences(Cells cells, const RgbImage& a, const RgbImage& a_variance,
+Differences welch_differences(int block, const RgbImage& a, const RgbImage& a_variance,
                               double a_spp, const RgbImage& b, const RgbImage& b_variance,
                               double b_spp, double min_variance) {
   Differences d;
-  d.delta = cell_means(to_xyz(a), cells);
-  RgbImage b_mean = cell_means(to_xyz(b), cells);
-  RgbImage va = cell_means(to_clamped_xyz_variance(a_variance, min_variance), cells);
-  RgbImage vb = cell_means(to_clamped_xyz_variance(b_variance, min_variance), cells);
+  d.delta = block_means(to_xyz(a), block);
+  RgbImage b_mean = block_means(to_xyz(b), block);
+  RgbImage va = block_means(to_clamped_xyz_variance(a_variance, min_variance), block);
+  RgbImage vb = block_means(to_clamped_xyz_variance(b_variance, min_variance), block);
   d.variance = d.delta;
   d.dof = d.delta;
-  const double samples_per_cell = cells.pixels();
+  const double samples_per_cell = double(block) * block;
   for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
     d.delta.rgb[i] -= b_mean.rgb[i];
     welch(va.rgb[i], samples_per_cell * a_spp, vb.rgb[i], samples_per_cell * b_spp,
@@ -238,15 +220,15 @@ Differences welch_differences(Cells cells, const RgbImage& a, const RgbImage& a_
   return d;
 }
 
-HypothesisTestResult welch_test(const std::string& name, Cells cells, const RgbImage& a,
+HypothesisTestResult welch_test(const std::string& name, int block, const RgbImage& a,
                                 const RgbImage& a_variance, double a_spp, const RgbImage& b,
                                 const RgbImage& b_variance, double b_spp, double alpha,
                                 double required_fraction, double min_variance) {
   if (!(a_spp > 1.0 && b_spp > 1.0))
     throw std::invalid_argument("Welch's test needs more than one sample per pixel on each side");
   Differences d =
-      welch_differences(cells, a, a_variance, a_spp, b, b_variance, b_spp, min_variance);
-  return evaluate(name, cells.w, d, alpha, required_fraction);
+      welch_differences(block, a, a_variance, a_spp, b, b_variance, b_spp, min_variance);
+  return evaluate(name, block, d, alpha, required_fraction);
 }
 
 }  // namespace
@@ -255,7 +237,7 @@ HypothesisTestResult pixel_welch_test(const RgbImage& a, const RgbImage& a_varia
                                       const RgbImage& b, const RgbImage& b_variance, double b_spp,
                                       const VarianceTestOptions& options) {
   check_inputs(a, {&a_variance, &b, &b_variance}, {a_spp, b_spp});
-  return welch_test("pixel_welch", square_cells(1), a, a_variance, a_spp, b, b_variance, b_spp,
+  return welch_test("pixel_welch", 1, a, a_variance, a_spp, b, b_variance, b_spp,
                     sidak_alpha(options.family_alpha, double(a.pixel_count())),
                     options.pass_fraction, options.min_variance);
 }
@@ -268,7 +250,7 @@ HypothesisTestResult block_welch_test(const RgbImage& a, const RgbImage& a_varia
   if (block < 1 || a.width < block || a.height < block)
     throw std::invalid_argument("image smaller than one block");
   double cells = double(a.width / block) * double(a.height / block);
-  return welch_test("block_welch", square_cells(block), a, a_variance, a_spp, b, b_variance, b_spp,
+  return welch_test("block_welch", block, a, a_variance, a_spp, b, b_variance, b_spp,
                     sidak_alpha(options.family_alpha, 3.0 * cells), 1.0, options.min_variance);
 }
 
