@@ -5,6 +5,7 @@
 #include "core/material_slots.h"
 #include "scenes/bitmap.h"
 #include "scenes/ior.h"
+#include "core/bsdf/roughplastic.h"
 #include "scenes/scene_builder.h"
 #include "scenes/values.h"
 
@@ -207,6 +208,31 @@ uint SceneBuilder::material(Node& bsdf) {
   return index;
 }
 
+// Mitsuba's precomputed roughplastic terms (core/bsdf/roughplastic_table.h): the external
+// transmittance table as a one-row texture, the internal reflectance in value.x.
+TexturedValue SceneBuilder::roughplastic_table(const Material& m) {
+  bool beckmann = (m.flags & MATERIAL_BECKMANN) != 0u;
+  float alpha = m.param[PLASTIC_ALPHA].value.x;
+  Texture t{};
+  t.type = TEXTURE_BITMAP;
+  t.filter_mode = FILTER_BILINEAR;
+  t.wrap_mode = WRAP_CLAMP;
+  t.texel_offset = uint(b_.texels.size());
+  t.width = ROUGHPLASTIC_TABLE_RES;
+  t.height = 1u;
+  t.to_uv[0] = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+  t.to_uv[1] = vec4(0.0f, 1.0f, 0.0f, 0.0f);
+  for (uint j = 0; j < ROUGHPLASTIC_TABLE_RES; ++j) {
+    float T = roughplastic_external_transmittance(beckmann, alpha, m.eta, roughplastic_table_mu(j));
+    b_.texels.push_back(vec4(T, T, T, 1.0f));
+  }
+  TexturedValue v;
+  v.value = vec3(roughplastic_internal_reflectance(beckmann, alpha, m.eta));
+  v.texture = uint(b_.textures.size());
+  b_.textures.push_back(t);
+  return v;
+}
+
 Material SceneBuilder::build_material(Node& n) {
   const std::string& type = n.type;
   Material m;
@@ -292,6 +318,7 @@ Material SceneBuilder::build_material(Node& n) {
       if (has_property(n, "alpha_u") || has_property(n, "alpha_v"))
         fail(n.loc, describe(n), ": roughplastic is isotropic; use 'alpha'");
       m.param[PLASTIC_ALPHA] = constant_value(glm::dvec3(take_float(n, "alpha", 0.1)));
+      m.param[ROUGHPLASTIC_TABLE] = roughplastic_table(m);
     }
   } else if (type == "principled") {
     m = build_principled(n);

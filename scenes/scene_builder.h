@@ -56,6 +56,7 @@ class SceneBuilder {
   uint default_material();
   Material build_material(Node& bsdf);
   Material build_principled(Node& bsdf);
+  TexturedValue roughplastic_table(const Material& m);
   // A BSDF parameter that may be a texture. `scalar`: Mitsuba reads it with eval_1 (one value).
   TexturedValue textured(Node& owner, const std::string& name, glm::dvec3 default_value,
                          bool scalar);
