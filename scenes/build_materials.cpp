@@ -2,10 +2,10 @@
 // records. Defaults are Mitsuba 3's (v3.5 plugin sources, src/bsdfs/*.cpp, src/textures/*.cpp).
 #include <filesystem>
 
+#include "core/bsdf/roughplastic.h"
 #include "core/material_slots.h"
 #include "scenes/bitmap.h"
 #include "scenes/ior.h"
-#include "core/bsdf/roughplastic.h"
 #include "scenes/scene_builder.h"
 #include "scenes/values.h"
 

@@ -5,16 +5,58 @@
 
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace tr {
 
+namespace {
+
+// Merges vertices whose position, normal and uv are bitwise equal: Mitsuba's OBJ loader keys
+// its vertices by (v, vt, vn) index triples, which this reproduces on Assimp's per-corner data.
+void join_identical_vertices(TriangleMesh& mesh) {
+  struct Key {
+    float f[8];
+    bool operator==(const Key& o) const { return std::memcmp(f, o.f, sizeof(f)) == 0; }
+  };
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes
+      const unsigned char* b = reinterpret_cast<const unsigned char*>(k.f);
+      for (size_t i = 0; i < sizeof(k.f); ++i) h = (h ^ b[i]) * 1099511628211ull;
+      return size_t(h);
+    }
+  };
+  std::unordered_map<Key, uint32_t, Hash> index_of;
+  TriangleMesh out;
+  std::vector<uint32_t> remap(mesh.positions.size());
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    Key k{};
+    glm::vec3 n = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[v];
+    glm::vec2 t = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v];
+    const float values[8] = {
+        mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z, n.x, n.y, n.z, t.x, t.y};
+    std::memcpy(k.f, values, sizeof(values));
+    auto [it, inserted] = index_of.emplace(k, uint32_t(out.positions.size()));
+    if (inserted) {
+      out.positions.push_back(mesh.positions[v]);
+      if (!mesh.normals.empty()) out.normals.push_back(n);
+      if (!mesh.uvs.empty()) out.uvs.push_back(t);
+    }
+    remap[v] = it->second;
+  }
+  for (uint32_t i : mesh.indices) out.indices.push_back(remap[i]);
+  mesh = std::move(out);
+}
+
+}  // namespace
+
 TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
   Assimp::Importer importer;
-  // Join identical (position, normal, uv) corners, as Mitsuba's OBJ loader keys its vertices
-  // by (v, vt, vn) index triples; no normal generation (the caller follows Mitsuba).
-  const aiScene* ai = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  // No vertex joining (Assimp's merges within an absolute epsilon) and no normal generation
+  // (the caller follows Mitsuba); corners are joined exactly below.
+  const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!ai || !ai->mRootNode) throw std::runtime_error(importer.GetErrorString());
 
   TriangleMesh mesh;
@@ -50,6 +92,7 @@ TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
     }
   }
   if (mesh.indices.empty()) throw std::runtime_error("the file contains no triangles");
+  join_identical_vertices(mesh);
   if (any_normals && !all_normals)
     throw std::runtime_error("only some parts of the mesh have vertex normals");
   if (any_uvs && !all_uvs)

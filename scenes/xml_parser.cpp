@@ -80,7 +80,8 @@ glm::dmat4 rotation(glm::dvec3 axis, double degrees) {
 
 class Parser {
  public:
-  explicit Parser(const LoadOptions& options) : params_(options.defines), defines_(options.defines) {
+  explicit Parser(const LoadOptions& options)
+      : params_(options.defines), defines_(options.defines) {
     for (const std::string& p : options.search_paths) resolver_.dirs.push_back(fs::path(p));
   }
 
