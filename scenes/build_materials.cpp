@@ -33,6 +33,11 @@ Material empty_material(uint type) {
 
 double luminance_d(glm::dvec3 c) { return 0.212671 * c.x + 0.715160 * c.y + 0.072169 * c.z; }
 
+// eval_1 of a constant color: Mitsuba's srgb texture returns mean() there, the average of the
+// three channels (src/spectra/srgb.cpp); a float (uniform texture) is its value, which the
+// average of the broadcast color reproduces.
+double scalar_of_constant(glm::dvec3 c) { return (c.x + c.y + c.z) / 3.0; }
+
 // Mitsuba's lookup_ior: a float, or a name from the IOR table.
 double ior_parameter(Node& node, const std::string& name, const char* default_name) {
   Property* p = find_property(node, name);
@@ -152,8 +157,9 @@ uint SceneBuilder::texture(Node& tex, bool scalar) {
     if (scalar) {
       // Mitsuba's checkerboard eval_1 picks color0 where eval picks color1 and vice versa
       // (src/textures/checkerboard.cpp: `neq` in eval_1, `eq` in eval); scalar parameters are
-      // read through eval_1, so they see the colors swapped. Reproduced here.
-      glm::dvec3 s0(luminance_d(c1)), s1(luminance_d(c0));
+      // read through eval_1, so they see the colors swapped. Reproduced here, with each
+      // constant color reduced as its own eval_1 does.
+      glm::dvec3 s0(scalar_of_constant(c1)), s1(scalar_of_constant(c0));
       c0 = s0;
       c1 = s1;
     }
@@ -183,7 +189,7 @@ TexturedValue SceneBuilder::textured(Node& owner, const std::string& name, glm::
     return v;
   }
   glm::dvec3 c = take_color(owner, name, default_value);
-  if (scalar) c = glm::dvec3(luminance_d(c));  // eval_1 of a constant color: its luminance
+  if (scalar) c = glm::dvec3(scalar_of_constant(c));
   return constant_value(c);
 }
 

@@ -313,7 +313,7 @@ TEST(SceneValues, PrincipledSpecularToEta) {
 TEST(SceneValues, TexturesForColorAndScalarParameters) {
   Scene s = load_text(
       "<texture type=\"checkerboard\" id=\"checks\"><rgb name=\"color0\" value=\"1 0 0\"/>"
-      "<rgb name=\"color1\" value=\"0 0 1\"/><transform name=\"to_uv\"><scale x=\"4\" y=\"2\"/>"
+      "<rgb name=\"color1\" value=\"0 0 0.6\"/><transform name=\"to_uv\"><scale x=\"4\" y=\"2\"/>"
       "<translate x=\"0.5\"/></transform></texture>"
       "<shape type=\"sphere\"><bsdf type=\"mask\"><ref name=\"opacity\" id=\"checks\"/>"
       "<bsdf type=\"diffuse\"><ref name=\"reflectance\" id=\"checks\"/></bsdf></bsdf></shape>");
@@ -328,11 +328,12 @@ TEST(SceneValues, TexturesForColorAndScalarParameters) {
   EXPECT_EQ(c.color0, vec4(1, 0, 0, 1));
   EXPECT_EQ(c.to_uv[0], vec4(4, 0, 0.5, 0));
   EXPECT_EQ(c.to_uv[1], vec4(0, 2, 0, 0));
-  // Scalar reads (Mitsuba eval_1) see the luminance, with color0/color1 swapped as Mitsuba's
-  // checkerboard eval_1 does.
+  // Scalar reads (Mitsuba eval_1) see each constant color's channel mean (srgb::mean), with
+  // color0/color1 swapped as Mitsuba's checkerboard eval_1 does.
   const Texture& t = b.textures[scalar_tex];
-  EXPECT_NEAR(t.color0.x, 0.072169, 1e-6);
-  EXPECT_NEAR(t.color1.x, 0.212671, 1e-6);
+  EXPECT_NEAR(t.color0.x, 0.2, 1e-6);
+  EXPECT_NEAR(t.color1.x, 1.0 / 3.0, 1e-6);
+  EXPECT_NEAR(t.color1.z, 1.0 / 3.0, 1e-6);
 }
 
 TEST(SceneValues, AreaEmitterAliasTableFollowsTriangleArea) {
