@@ -22,6 +22,7 @@
 #include "core/bsdf/dielectric.h"
 #include "core/bsdf/diffuse.h"
 #include "core/bsdf/plastic.h"
+#include "core/bsdf/principled.h"
 #include "core/bsdf/roughconductor.h"
 #include "core/bsdf/roughdielectric.h"
 #include "core/bsdf/roughplastic.h"
@@ -43,6 +44,8 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
       return plastic_flags(m, uv);
     case BSDF_ROUGHPLASTIC:
       return roughplastic_flags(m, uv);
+    case BSDF_PRINCIPLED:
+      return principled_flags(m, uv);
     case BSDF_DIELECTRIC:
       return dielectric_flags(m, uv);
     case BSDF_THINDIELECTRIC:
@@ -64,6 +67,8 @@ INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
       return plastic_eval(m, uv, wi, wo);
     case BSDF_ROUGHPLASTIC:
       return roughplastic_eval(m, uv, wi, wo);
+    case BSDF_PRINCIPLED:
+      return principled_eval(m, uv, wi, wo);
     default:
       return vec3(0.0f);
   }
@@ -81,6 +86,8 @@ INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
       return plastic_pdf(m, uv, wi, wo);
     case BSDF_ROUGHPLASTIC:
       return roughplastic_pdf(m, uv, wi, wo);
+    case BSDF_PRINCIPLED:
+      return principled_pdf(m, uv, wi, wo);
     default:
       return 0.0f;
   }
@@ -100,6 +107,8 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       return plastic_sample(m, uv, wi, u1, u2);
     case BSDF_ROUGHPLASTIC:
       return roughplastic_sample(m, uv, wi, u1, u2);
+    case BSDF_PRINCIPLED:
+      return principled_sample(m, uv, wi, u1, u2);
     case BSDF_DIELECTRIC:
       return dielectric_sample(m, uv, wi, u1, u2);
     case BSDF_THINDIELECTRIC:

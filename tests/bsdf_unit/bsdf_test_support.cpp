@@ -71,6 +71,25 @@ Material thin_dielectric(float eta) {
   return m;
 }
 
+Material principled(const PrincipledParams& p) {
+  Material m = make_material(BSDF_PRINCIPLED);
+  m.eta = p.eta;
+  m.param[PRINCIPLED_BASE_COLOR] = constant(p.base_color);
+  m.param[PRINCIPLED_ROUGHNESS] = constant(p.roughness);
+  m.param[PRINCIPLED_METALLIC] = constant(p.metallic);
+  m.param[PRINCIPLED_SPEC_TINT] = constant(p.spec_tint);
+  m.param[PRINCIPLED_ANISOTROPIC] = constant(p.anisotropic);
+  m.param[PRINCIPLED_SHEEN] = constant(p.sheen);
+  m.param[PRINCIPLED_SHEEN_TINT] = constant(p.sheen_tint);
+  m.param[PRINCIPLED_CLEARCOAT] = constant(p.clearcoat);
+  m.param[PRINCIPLED_CLEARCOAT_GLOSS] = constant(p.clearcoat_gloss);
+  m.param[PRINCIPLED_SPEC_TRANS] = constant(p.spec_trans);
+  m.param[PRINCIPLED_SAMPLING_RATES] =
+      constant(vec3(p.diffuse_rate, p.specular_rate, p.clearcoat_rate));
+  if (p.flatness != 0.0f) throw std::logic_error("principled: flatness has no material slot");
+  return m;
+}
+
 Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec3 k) {
   Material m = conductor(eta, k);
   m.type = BSDF_ROUGHCONDUCTOR;
