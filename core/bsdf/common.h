@@ -69,12 +69,10 @@ INLINE BsdfSample bsdf_sample_smooth(vec3 wo, float pdf, vec3 value, float eta, 
   return bsdf_sample_make(wo, pdf, weight, eta, lobe);
 }
 
-// A scalar parameter: its constant, or the texture as Mitsuba's Texture::eval_1 reads it
-// (luminance of the RGB lookup; grey textures are stored with equal channels).
-INLINE float eval_textured_1(TexturedValue v, vec2 uv) {
-  if (v.texture == NO_INDEX) return v.value.x;
-  return luminance(eval_textured(v, uv));
-}
+// A scalar parameter (Mitsuba's Texture::eval_1): the loader stores scalar parameters already
+// reduced as eval_1 reduces them (a bitmap's luminance, a constant color's channel mean), in
+// every channel, so the first channel is the value.
+INLINE float eval_textured_1(TexturedValue v, vec2 uv) { return eval_textured(v, uv).x; }
 
 // drjit::mulsign: x with the sign of s (s = 0 counts as positive).
 INLINE float mulsign(float x, float s) { return s >= 0.0f ? x : -x; }
