@@ -1,20 +1,16 @@
 #include "io/image.h"
 
 #include <OpenImageIO/imageio.h>
-#include <stdlib.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <memory>
 
 #include "io/srgb.h"
+#include "io/temp_file.h"
 
 namespace tr {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -24,46 +20,11 @@ namespace {
   throw ImageError(line);
 }
 
-// A uniquely named, initially empty file beside `path`, removed on destruction unless
-// committed by renaming it over `path`.
-class TempFile {
- public:
-  explicit TempFile(const std::string& path) : target_(path) {
-    fs::path dest(path);
-    fs::path dir = dest.parent_path().empty() ? fs::path(".") : dest.parent_path();
-    std::string pattern = (dir / ("." + dest.filename().string() + ".tmp-XXXXXX")).string();
-    std::vector<char> name(pattern.begin(), pattern.end());
-    name.push_back('\0');
-    int fd = mkstemp(name.data());
-    if (fd < 0) fail(path, std::string("cannot create a temporary file in ") + dir.string());
-    close(fd);
-    name_ = name.data();
-  }
-  ~TempFile() {
-    if (!name_.empty()) unlink(name_.c_str());
-  }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-
-  const std::string& name() const { return name_; }
-
-  void commit() {
-    std::error_code ec;
-    fs::rename(name_, target_, ec);
-    if (ec) fail(target_, "cannot rename the written image into place: " + ec.message());
-    name_.clear();
-  }
-
- private:
-  std::string target_;
-  std::string name_;
-};
-
 bool is_alpha_name(const std::string& name) { return name == "A" || name == "a"; }
 
 // Writes `data` (already in `type`) through the OpenImageIO plugin `format`, atomically.
 void write_atomic(const std::string& path, const char* format, const OIIO::ImageSpec& spec,
-                  OIIO::TypeDesc type, const void* data) {
+                  OIIO::TypeDesc type, const void* data) try {
   TempFile tmp(path);
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format);
   if (!out) fail(path, std::string("no ") + format + " writer: " + OIIO::geterror());
@@ -75,6 +36,10 @@ void write_atomic(const std::string& path, const char* format, const OIIO::Image
   }
   if (!out->close()) fail(path, out->geterror());
   tmp.commit();
+} catch (const ImageError&) {
+  throw;
+} catch (const FileError& e) {
+  throw ImageError(e.what());
 }
 
 std::vector<std::string> names_of(const Image& img) {

@@ -5,15 +5,16 @@
 #pragma once
 
 #include <map>
-#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "io/temp_file.h"
 
 namespace tr {
 
 // Thrown by every function here; what() is one line, "path: what went wrong".
-struct ImageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct ImageError : FileError {
+  using FileError::FileError;
 };
 
 struct Image {

@@ -163,7 +163,12 @@ TEST_F(Acceptance, LockstepToleratesRoundingButNotSmallBias) {
   EXPECT_FALSE(bias.passed);
 }
 
-TEST_F(Acceptance, WelchPassesTwoUnbiasedRendersAndCatchesAScale) {
+// Two renders, each with its own variance (as CPU against GPU): Welch's tests pass unbiased
+// pairs and catch the 10% block. (A 2% scale between two 868-spp renders of this scene is
+// beyond what per-block tests resolve, and the gain test needs a converged reference.)
+TEST_F(Acceptance, WelchPassesTwoUnbiasedRendersAndCatchesABlockBias) {
+  int bx = 0, by = 0;
+  best_determined_block(&bx, &by);
   for (std::uint64_t seed : kSeeds) {
     CompareInputs in;
     in.test = testing::noisy_render(ref(), var(), kSpp, seed);
@@ -172,15 +177,17 @@ TEST_F(Acceptance, WelchPassesTwoUnbiasedRendersAndCatchesAScale) {
     in.reference_variance = var();
     in.test_spp = in.reference_spp = kSpp;
     CompareReport r = compare_images(in);
-    ASSERT_TRUE(r.pixel_welch && r.block_welch && r.gain_welch);
+    ASSERT_TRUE(r.pixel_welch && r.block_welch);
     EXPECT_TRUE(r.pixel_welch->passed) << "seed " << seed;
     EXPECT_TRUE(r.block_welch->passed) << "seed " << seed << ": min p " << r.block_welch->min_p;
-    EXPECT_TRUE(r.gain_welch->passed) << "seed " << seed << ": min p " << r.gain_welch->min_p;
+    EXPECT_EQ(r.criteria, (std::vector<std::string>{"pixel_welch", "block_welch"}));
 
-    for (double& v : in.test.rgb) v *= 1.02;
-    CompareReport scaled = compare_images(in);
-    EXPECT_FALSE(scaled.gain_welch->passed) << "seed " << seed;
-    EXPECT_FALSE(scaled.passed) << "seed " << seed;
+    in.test = scaled_patch(in.test, bx, by, 1.1);
+    CompareReport patched = compare_images(in);
+    EXPECT_FALSE(patched.block_welch->passed) << "seed " << seed;
+    EXPECT_EQ(patched.block_welch->min_p_x, bx / 4);
+    EXPECT_EQ(patched.block_welch->min_p_y, by / 4);
+    EXPECT_FALSE(patched.passed) << "seed " << seed;
   }
 }
 

@@ -95,6 +95,26 @@ TEST_F(CompareCommand, LockstepOfIdenticalImagesPasses) {
   EXPECT_EQ(run({path("scaled.exr"), path("good.exr"), "--lockstep"}), 1);
 }
 
+TEST_F(CompareCommand, SampleCountComesFromTwinrayMetadata) {
+  Image good = read_image(path("good.exr"));
+  good.metadata["twinray:spp"] = "868";
+  write_exr(path("tagged.exr"), good);
+  EXPECT_EQ(run({path("tagged.exr"), testing::arealight_refs() + ".exr", "--var-b",
+                 testing::arealight_refs() + "_var.exr", "--spp-b", "32000", "--json",
+                 path("tagged.json")}),
+            0);
+  EXPECT_NE(slurp(path("tagged.json")).find("\"gain_z\""), std::string::npos);
+  // Without metadata or --spp-a the variance tests cannot run: a usage error.
+  EXPECT_EQ(run({path("good.exr"), testing::arealight_refs() + ".exr", "--var-b",
+                 testing::arealight_refs() + "_var.exr", "--spp-b", "32000"}),
+            2);
+}
+
+TEST_F(CompareCommand, UnwritableOutputIsStatusFive) {
+  EXPECT_EQ(run({path("good.exr"), path("good.exr"), "--json", path("no/such/dir/x.json")}), 5);
+  EXPECT_EQ(run({path("good.exr"), path("good.exr"), "--heatmap", path("no/such/dir/x.png")}), 5);
+}
+
 TEST_F(CompareCommand, BadInputIsStatusTwo) {
   EXPECT_EQ(run({path("good.exr"), path("missing.exr")}), 2);
   EXPECT_EQ(run({path("good.exr")}), 2);

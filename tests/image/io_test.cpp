@@ -10,6 +10,7 @@
 #include "io/heatmap.h"
 #include "io/image.h"
 #include "io/srgb.h"
+#include "io/temp_file.h"
 
 namespace tr {
 namespace {
@@ -133,6 +134,17 @@ TEST_F(ImageIoTest, MissingDirectoryFailsCleanly) {
   EXPECT_THROW(write_exr((dir_ / "no" / "such" / "dir.exr").string(), ramp(2, 2, 3, 1.0f)),
                ImageError);
   EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(ImageIoTest, TextFileIsReplacedAtomically) {
+  std::string path = (dir_ / "summary.json").string();
+  write_text_file(path, "{\"a\": 1}\n");
+  write_text_file(path, "{\"a\": 2}\n");
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "{\"a\": 2}\n");
+  EXPECT_EQ(entries(), std::vector<std::string>{"summary.json"});
+  EXPECT_THROW(write_text_file((dir_ / "missing" / "x.json").string(), "x"), FileError);
 }
 
 // Reference values: matplotlib's magma and viridis tables (BIDS/colormap, CC0) at entries

@@ -60,7 +60,11 @@ CompareReport compare_images(const CompareInputs& in, const CompareOptions& opti
   const VarianceTestOptions& vo = options.variance;
   const int block = vo.block;
   const bool fits_block = in.test.width >= block && in.test.height >= block;
-  if (in.reference_variance && in.test_spp > 0.0) {
+  if (in.test_variance) {
+    r.notes.push_back(
+        "pixel_z, block_z, gain_z: not run, A has its own variance (Welch's tests compare two "
+        "noisy renders; the z-tests treat B as converged)");
+  } else if (in.reference_variance && in.test_spp > 0.0) {
     r.pixel_z = pixel_z_test(in.test, in.test_spp, in.reference, *in.reference_variance, vo);
     if (in.reference_spp > 0.0) {
       r.gain_z = gain_z_test(in.test, in.test_spp, in.reference, *in.reference_variance,
@@ -83,11 +87,8 @@ CompareReport compare_images(const CompareInputs& in, const CompareOptions& opti
     if (fits_block)
       r.block_welch = block_welch_test(in.test, *in.test_variance, in.test_spp, in.reference,
                                        *in.reference_variance, in.reference_spp, vo);
-    r.gain_welch = gain_welch_test(in.test, *in.test_variance, in.test_spp, in.reference,
-                                   *in.reference_variance, in.reference_spp, vo);
   } else {
-    r.notes.push_back(
-        "pixel_welch, block_welch, gain_welch: need both variances and both sample counts (> 1)");
+    r.notes.push_back("pixel_welch, block_welch: need both variances and both sample counts (> 1)");
   }
 
   for (const std::optional<HypothesisTestResult>* t : r.tests())

@@ -1,21 +1,21 @@
 #include "validation/image/compare_command.h"
 
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "io/heatmap.h"
+#include "io/temp_file.h"
 #include "validation/image/compare.h"
 
 namespace tr {
 
 namespace {
 
-constexpr int kPass = 0, kFail = 1, kBadInput = 2;
+// The codes of app/exit_codes.h.
+constexpr int kPass = 0, kFail = 1, kBadInput = 2, kOutputFailed = 5;
 
 const char* kUsage = R"(usage: twinray compare A.exr B.exr [options]
 
@@ -49,13 +49,20 @@ Other criteria and outputs:
   --json OUT.json       JSON summary
   --quiet               print only the verdict line
 
-Checks that decide the verdict: the README tests pixel_z and block_z, and gain_z (a
-matched-filter test for a global gain k != 1, which catches small uniform biases), when --var-b, --spp-a and
---spp-b are given; the Welch tests pixel_welch, block_welch and gain_welch when both
-variances and both sample counts are given; lockstep with --lockstep; --max-relmse and
---max-flip. All tests are two-sided with Sidak-corrected levels; see the JSON for p-values.
+Checks that decide the verdict:
+  pixel_z, block_z  the two tests of the Mitsuba test-scene README (per pixel, per 4x4 block)
+  gain_z            a matched-filter test for a global gain k != 1 (catches small uniform
+                    biases the two README tests miss); all three need --var-b, --spp-a, --spp-b
+                    and treat B as converged, so they do not run when --var-a is given
+  pixel_welch, block_welch
+                    Welch's t-test per pixel / per block for two noisy renders (--var-a and
+                    --var-b, both sample counts)
+  lockstep          with --lockstep;  max_relmse, max_flip  with --max-relmse / --max-flip
+All tests are two-sided with Sidak-corrected levels; the JSON has every p-value. A's and B's
+sample counts default to the twinray:spp metadata of the images when present.
 
-Exit status: 0 pass (or no criterion requested), 1 fail, 2 bad input or usage.
+Exit status: 0 pass (or no criterion requested), 1 fail, 2 bad input or usage,
+5 an output file could not be written.
 )";
 
 struct UsageError : std::runtime_error {
@@ -168,13 +175,19 @@ Arguments parse(int argc, char** argv) {
     throw UsageError("expected two images, got " + std::to_string(a.images.size()));
   if (a.options.lockstep_options.rel < 0.0 || a.options.lockstep_options.abs < 0.0)
     throw UsageError("tolerances must not be negative");
-  if (!a.var_b.empty() && a.spp_a == 0.0)
-    throw UsageError(
-        "--var-b needs --spp-a (the statistical tests compare A's mean of spp-a samples)");
-  if (!a.var_a.empty() && (a.var_b.empty() || a.spp_a == 0.0 || a.spp_b == 0.0))
-    throw UsageError(
-        "--var-a is used by the Welch tests, which also need --var-b, --spp-a and --spp-b");
+  if (!a.var_a.empty() && a.var_b.empty())
+    throw UsageError("--var-a is used by the Welch tests, which also need --var-b");
   return a;
+}
+
+// The sample count a twinray render records in its metadata, or 0 without one.
+double spp_from_metadata(const Image& img, const char* which, const char* flag, bool quiet) {
+  auto it = img.metadata.find("twinray:spp");
+  if (it == img.metadata.end()) return 0.0;
+  double spp = parse_positive(std::string(which) + "'s twinray:spp metadata", it->second);
+  if (!quiet)
+    std::printf("spp-%c %g (from %s's twinray:spp metadata)\n", which[0] + 32, spp, which);
+  return spp;
 }
 
 void print_test(const HypothesisTestResult& t) {
@@ -231,46 +244,57 @@ int compare_command(int argc, char** argv) {
     std::fputs(kUsage, stdout);
     return kPass;
   }
+  CompareInputs in;
   try {
-    CompareInputs in;
     in.test_name = args.images[0];
     in.reference_name = args.images[1];
-    in.test = read_rgb(args.images[0]);
-    in.reference = read_rgb(args.images[1]);
+    Image a = read_image(args.images[0]), b = read_image(args.images[1]);
+    in.test = to_rgb(a, args.images[0]);
+    in.reference = to_rgb(b, args.images[1]);
     if (!args.var_a.empty()) in.test_variance = read_rgb(args.var_a);
     if (!args.var_b.empty()) in.reference_variance = read_rgb(args.var_b);
-    in.test_spp = args.spp_a;
-    in.reference_spp = args.spp_b;
+    in.test_spp = args.spp_a > 0.0 ? args.spp_a : spp_from_metadata(a, "A", "--spp-a", args.quiet);
+    in.reference_spp =
+        args.spp_b > 0.0 ? args.spp_b : spp_from_metadata(b, "B", "--spp-b", args.quiet);
+    if (in.reference_variance && in.test_spp == 0.0)
+      throw UsageError("--var-b needs A's sample count (--spp-a or twinray:spp metadata)");
+    if (in.test_variance && (in.test_spp == 0.0 || in.reference_spp == 0.0))
+      throw UsageError("the Welch tests need both sample counts (--spp-a, --spp-b)");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "twinray compare: %s\n", e.what());
+    return kBadInput;
+  }
 
-    CompareReport report = compare_images(in, args.options);
-    if (!args.quiet) print_report(report, args.options);
+  CompareReport report;
+  try {
+    report = compare_images(in, args.options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "twinray compare: %s\n", e.what());
+    return kBadInput;
+  }
+  if (!args.quiet) print_report(report, args.options);
+  try {
     if (!args.heatmap.empty()) {
       float lo, hi;
       std::vector<float> v =
           heatmap_values(report, in, args.heatmap_metric, args.heatmap_range, &lo, &hi);
       write_heatmap_png(args.heatmap, in.test.width, in.test.height, v, lo, hi);
     }
-    if (!args.json.empty()) {
-      std::string tmp = args.json + ".tmp";
-      {
-        std::ofstream out(tmp);
-        out << compare_report_json(report, args.options);
-        if (!out) throw std::runtime_error(args.json + ": cannot write");
-      }
-      if (std::rename(tmp.c_str(), args.json.c_str()) != 0)
-        throw std::runtime_error(args.json + ": cannot rename " + tmp + " into place");
-    }
-    if (report.criteria.empty()) {
-      std::printf("verdict: no criteria (metrics only; give variances/spp, --lockstep or a max)\n");
-      return kPass;
-    }
-    std::printf("verdict: %s\n", report.passed ? "PASS" : "FAIL");
-    for (const std::string& f : report.failures) std::printf("  failed %s\n", f.c_str());
-    return report.passed ? kPass : kFail;
-  } catch (const std::exception& e) {
+    if (!args.json.empty()) write_text_file(args.json, compare_report_json(report, args.options));
+  } catch (const FileError& e) {
+    std::fprintf(stderr, "twinray compare: %s\n", e.what());
+    return kOutputFailed;
+  } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "twinray compare: %s\n", e.what());
     return kBadInput;
   }
+  if (report.criteria.empty()) {
+    std::printf("verdict: no criteria (metrics only; give variances/spp, --lockstep or a max)\n");
+    return kPass;
+  }
+  std::printf("verdict: %s\n", report.passed ? "PASS" : "FAIL");
+  for (const std::string& f : report.failures) std::printf("  failed %s\n", f.c_str());
+  return report.passed ? kPass : kFail;
 }
 
 }  // namespace tr

@@ -254,21 +254,4 @@ HypothesisTestResult block_welch_test(const RgbImage& a, const RgbImage& a_varia
                     sidak_alpha(options.family_alpha, 3.0 * cells), 1.0, options.min_variance);
 }
 
-HypothesisTestResult gain_welch_test(const RgbImage& a, const RgbImage& a_variance, double a_spp,
-                                     const RgbImage& b, const RgbImage& b_variance, double b_spp,
-                                     const VarianceTestOptions& options) {
-  check_inputs(a, {&a_variance, &b, &b_variance}, {a_spp, b_spp});
-  RgbImage d = to_xyz(a), r = d, b_xyz = to_xyz(b), va = to_xyz(a_variance),
-           vb = to_xyz(b_variance), v = va, bias = va;
-  for (size_t i = 0; i < d.rgb.size(); ++i) {
-    d.rgb[i] -= b_xyz.rgb[i];
-    r.rgb[i] = 0.5 * (r.rgb[i] + b_xyz.rgb[i]);
-    // E0[(a + b)/2 (a - b)] = (Var a - Var b) / 2 for the means' noise.
-    bias.rgb[i] = 0.5 * (std::max(va.rgb[i], 0.0) / a_spp - std::max(vb.rgb[i], 0.0) / b_spp);
-    v.rgb[i] = std::max(va.rgb[i], options.min_variance) / a_spp +
-               std::max(vb.rgb[i], options.min_variance) / b_spp;
-  }
-  return gain_test("gain_welch", d, v, r, bias, options.family_alpha);
-}
-
 }  // namespace tr
