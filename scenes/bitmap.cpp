@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,6 +35,13 @@ Image load_image(const std::string& path, bool raw) {
   in->close();
 
   bool decode = !raw && !spec.format.is_floating_point();
+  // 8-bit data takes only 256 values: decode them once.
+  bool eight_bit = spec.format.basetype == OIIO::TypeDesc::UINT8;
+  float table[256];
+  for (int i = 0; i < 256; ++i) table[i] = srgb_to_linear(i / 255.0f);
+  auto to_linear = [&](float c) {
+    return eight_bit ? table[std::clamp(int(std::lround(c * 255.0f)), 0, 255)] : srgb_to_linear(c);
+  };
   size_t count = size_t(image.width) * image.height;
   image.texels.resize(count);
   for (size_t i = 0; i < count; ++i) {
@@ -44,7 +52,7 @@ Image load_image(const std::string& path, bool raw) {
     } else {
       t = glm::vec4(px[0], px[1], px[2], image.channels == 4 ? px[3] : 1.0f);
     }
-    if (decode) t = glm::vec4(srgb_to_linear(t.x), srgb_to_linear(t.y), srgb_to_linear(t.z), t.w);
+    if (decode) t = glm::vec4(to_linear(t.x), to_linear(t.y), to_linear(t.z), t.w);
     if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
       throw std::runtime_error("image contains NaN or infinite values");
     image.texels[i] = t;
