@@ -1,6 +1,7 @@
 #include "io/temp_file.h"
 
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -30,6 +31,10 @@ TempFile::TempFile(const std::string& path) : target_(path) {
   name.push_back('\0');
   int fd = mkstemp(name.data());
   if (fd < 0) fail(path, "cannot create a temporary file in " + dir.string());
+  // mkstemp creates the file 0600; give it the permissions a plain create would (0666 & ~umask).
+  mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, 0666 & ~mask);
   close(fd);
   name_ = name.data();
 }

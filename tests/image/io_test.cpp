@@ -1,5 +1,6 @@
 // Image I/O: EXR round trip with metadata, sRGB PNG encoding, atomic writes, colormaps.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -67,6 +68,9 @@ TEST_F(ImageIoTest, ExrRoundTripKeepsPixelsExactlyAndMetadata) {
   EXPECT_EQ(back.metadata.at("twinray:spp"), "868");
   EXPECT_EQ(back.metadata.at("twinray:scene"), "bsdf_spheres/test_arealight_path.xml");
   EXPECT_EQ(entries(), std::vector<std::string>{"a.exr"});  // no temporary file left
+  mode_t mask = umask(0);
+  umask(mask);
+  EXPECT_EQ(fs::status(path).permissions(), fs::perms(0666 & ~mask));  // not mkstemp's 0600
 }
 
 TEST_F(ImageIoTest, ReadsTheMitsubaReference) {
