@@ -1,7 +1,9 @@
 // Loader semantics on small scenes: camera, transforms, defaults/overrides/includes, materials,
 // emitters and their alias tables, instancing, bounds.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -383,6 +385,90 @@ TEST(SceneValues, ConstantSpectrumInsideAnEmitter) {
   EXPECT_NEAR(s.buffers.emitters[0].radiance.x, 1.204794, 1e-6);
   EXPECT_NEAR(s.buffers.emitters[0].radiance.y, 0.948291, 1e-6);
   EXPECT_NEAR(s.buffers.emitters[0].radiance.z, 0.908916, 1e-6);
+}
+
+TEST(SceneValues, EmitterPlacementFromTransforms) {
+  Scene s = load_text(
+      "<emitter type=\"point\"><transform name=\"to_world\"><translate value=\"1 2 3\"/>"
+      "</transform><rgb name=\"intensity\" value=\"4\"/></emitter>"
+      "<emitter type=\"directional\"><transform name=\"to_world\"><rotate y=\"1\" angle=\"90\"/>"
+      "</transform></emitter>");
+  const SceneBuffers& b = s.buffers;
+  EXPECT_EQ(b.emitters[0].position, vec3(1, 2, 3));
+  EXPECT_EQ(b.emitters[0].radiance, vec3(4));
+  // Mitsuba: the direction is to_world applied to +z; rotating +z by 90 degrees about y gives +x.
+  expect_near(glm::dvec3(b.emitters[1].direction), glm::dvec3(1, 0, 0), 1e-6);
+  EXPECT_EQ(b.globals.environment, NO_INDEX);
+}
+
+TEST(SceneValues, EnvmapTexelAliasTable) {
+  std::filesystem::path dir = fresh_dir();
+  // 4 x 2 float image, luminance-only values (grey) so lum = value.
+  const int W = 4, H = 2;
+  const float lum[H][W] = {{1, 0, 0, 0}, {0, 0, 2, 0}};
+  std::vector<float> rgb;
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) rgb.insert(rgb.end(), {lum[j][i], lum[j][i], lum[j][i]});
+  std::string exr = (dir / "env.exr").string();
+  auto out = OIIO::ImageOutput::create(exr);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(exr, OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()));
+  out->close();
+  std::string xml =
+      write_file(dir, "scene.xml",
+                 scene_xml("<emitter type=\"envmap\"><string name=\"filename\" value=\"env.exr\"/>"
+                           "<float name=\"scale\" value=\"2\"/><transform name=\"to_world\">"
+                           "<rotate x=\"1\" angle=\"90\"/></transform></emitter>"));
+  Scene s = load_scene(xml, {});
+  const SceneBuffers& b = s.buffers;
+  ASSERT_EQ(b.emitters.size(), 1u);
+  const Emitter& e = b.emitters[0];
+  EXPECT_EQ(e.type, EMITTER_ENVMAP);
+  EXPECT_EQ(e.scale, 2.0f);
+  EXPECT_EQ(b.globals.environment, 0u);
+  const Texture& t = b.textures[e.texture];
+  EXPECT_EQ(t.width, 4u);
+  EXPECT_EQ(t.height, 2u);
+  EXPECT_EQ(t.filter_mode, FILTER_BILINEAR);
+  EXPECT_EQ(t.wrap_mode, WRAP_REPEAT);
+  expect_near(apply(e.to_local, apply(e.to_world, glm::dvec3(0.3, 0.2, 0.1))),
+              glm::dvec3(0.3, 0.2, 0.1), 1e-6);
+  // weight(i, j) = sin(theta_j) (lum(i, j) + max lum over the 3x3 neighbourhood) / 2, u
+  // wrapping, v clamped; with two rows every texel's neighbourhood holds both rows.
+  ASSERT_EQ(e.alias_count, 8u);
+  std::vector<double> w;
+  for (int j = 0; j < H; ++j) {
+    double sin_theta = std::sin(M_PI * (j + 0.5) / H);
+    for (int i = 0; i < W; ++i) {
+      double m = 0.0;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+          m = std::max(m, double(lum[std::clamp(j + dj, 0, H - 1)][(i + di + W) % W]));
+      w.push_back(sin_theta * (lum[j][i] + m) / 2);
+    }
+  }
+  double total = std::accumulate(w.begin(), w.end(), 0.0);
+  for (int k = 0; k < W * H; ++k)
+    EXPECT_NEAR(b.alias[e.alias_offset + k].pmf, w[k] / total, 1e-6) << k;
+}
+
+TEST(SceneValues, SpectrumFilesAndAliases) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "flat.spd", "# wavelength value\n400 0.5\n700 0.5\n");
+  std::string xml = write_file(
+      dir, "scene.xml",
+      scene_xml(
+          "<bsdf type=\"diffuse\" id=\"a\"><spectrum name=\"reflectance\" filename=\"flat.spd\"/>"
+          "</bsdf><alias id=\"a\" as=\"b\"/><shape type=\"sphere\"><ref id=\"b\"/></shape>"
+          "<bsdf type=\"diffuse\" id=\"c\"><spectrum name=\"reflectance\" "
+          "value=\"400:0.5, 700:0.5\"/></bsdf>"));
+  Scene s = load_scene(xml, {});
+  const auto& m = s.buffers.materials;
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(s.buffers.shapes[0].material, 0u);
+  EXPECT_EQ(m[0].param[DIFFUSE_REFLECTANCE].value, m[1].param[DIFFUSE_REFLECTANCE].value);
+  EXPECT_NEAR(m[0].param[DIFFUSE_REFLECTANCE].value.y, 0.5, 0.01);
 }
 
 TEST(SceneValues, ShapegroupsAndInstances) {
