@@ -1,0 +1,539 @@
+#include "cases.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include "core/microfacet.h"
+#include "core/warp.h"
+#include "suite_size.h"
+#include "support/materials.h"
+
+namespace tr::bsdf_suite {
+namespace tv = twinray::validation;
+namespace {
+
+// Incident directions of the chi-square grid (degrees from the normal, azimuth 20°): normal,
+// oblique, and the grazing 85° and 89.9° the issue asks for; from below for two-sided and
+// transmissive BSDFs; one from below for one-sided BSDFs (nothing may be sampled there).
+std::vector<glm::vec3> angles(std::initializer_list<double> thetas) {
+  std::vector<glm::vec3> result;
+  for (double t : thetas) result.push_back(tv::direction_from_angles(t, 20.0));
+  return result;
+}
+const std::vector<glm::vec3> kFront = angles({0.0, 30.0, 60.0, 85.0, 89.9});
+const std::vector<glm::vec3> kOneSided = angles({0.0, 30.0, 60.0, 85.0, 89.9, 120.0});
+const std::vector<glm::vec3> kBothSides = angles({0.0, 30.0, 60.0, 85.0, 89.9, 150.0, 95.0, 90.1});
+
+std::string fmt(float x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+const char* name_of(Distribution d) { return d == Distribution::ggx ? "ggx" : "beckmann"; }
+
+// ---- Statistical cases -----------------------------------------------------------------
+
+class StatisticalList {
+ public:
+  std::vector<StatisticalCase> cases;
+
+  void directions(const std::string& family, const std::string& name,
+                  std::function<vec3(vec2)> sample, std::function<float(vec3)> pdf) {
+    tv::DirectionSampler s;
+    s.name = name;
+    s.sample = [sample, pdf](const glm::vec2& u) {
+      tv::DirectionSample d;
+      d.w = sample(u);
+      d.pdf = pdf(d.w);
+      return d;
+    };
+    s.pdf = [pdf](const glm::vec3& w) { return pdf(w); };
+    StatisticalCase c;
+    c.family = family;
+    c.directions = s;
+    cases.push_back(c);
+  }
+
+  void planar(const std::string& family, tv::PlanarSampler s) {
+    StatisticalCase c;
+    c.family = family;
+    c.planar = s;
+    cases.push_back(c);
+  }
+
+  // A BSDF at the given incident directions; transmissive ones get their albedo tested on
+  // energy weights.
+  void bsdf(const std::string& family, const std::string& name, const Material& m,
+            const std::vector<glm::vec3>& incident, bool transmissive) {
+    StatisticalCase c;
+    c.family = family;
+    c.bsdf = core_bsdf(name, m);
+    c.incident = incident;
+    if (transmissive) {
+      c.bsdf->energy_conserving = false;
+      c.energy = energy_weights(name + " [energy]", m);
+    }
+    cases.push_back(c);
+  }
+};
+
+void add_warps(StatisticalList& list) {
+  list.directions("warps", "square_to_cosine_hemisphere", square_to_cosine_hemisphere,
+                  square_to_cosine_hemisphere_pdf);
+  list.directions("warps", "square_to_uniform_sphere", square_to_uniform_sphere,
+                  square_to_uniform_sphere_pdf);
+  list.directions("warps", "square_to_uniform_hemisphere", square_to_uniform_hemisphere,
+                  square_to_uniform_hemisphere_pdf);
+  for (float cos_max : {-0.5f, 0.3f, 0.9f}) {
+    list.directions(
+        "warps", "square_to_uniform_cone cos_max=" + fmt(cos_max),
+        [cos_max](vec2 u) { return square_to_uniform_cone(u, cos_max); },
+        [cos_max](vec3 w) { return square_to_uniform_cone_pdf(w, cos_max); });
+  }
+  tv::PlanarSampler disk;
+  disk.name = "square_to_uniform_disk_concentric";
+  disk.sample = [](const glm::vec2& u) { return square_to_uniform_disk_concentric(u); };
+  disk.pdf = [](const glm::vec2& p) { return square_to_uniform_disk_concentric_pdf(p); };
+  disk.lower = vec2(-1.0f);
+  disk.upper = vec2(1.0f);
+  list.planar("warps", disk);
+  // Uniform triangles through barycentrics: density 1/area inside, 0 outside (a point may sit
+  // on an edge up to float rounding of the barycentric combination: 1e-6 slack).
+  struct Triangle {
+    const char* name;
+    vec2 p0, p1, p2;
+  };
+  for (Triangle t : {Triangle{"right", vec2(0.0f), vec2(1.0f, 0.0f), vec2(0.0f, 1.0f)},
+                     Triangle{"skewed", vec2(0.1f, 0.2f), vec2(0.9f, 0.4f), vec2(0.3f, 0.95f)}}) {
+    tv::PlanarSampler s;
+    s.name = std::string("square_to_uniform_triangle ") + t.name;
+    s.sample = [t](const glm::vec2& u) {
+      vec2 b = square_to_uniform_triangle(u);
+      return (1.0f - b.x - b.y) * t.p0 + b.x * t.p1 + b.y * t.p2;
+    };
+    s.pdf = [t](const glm::vec2& p) {
+      auto cross2 = [](vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; };
+      float area2 = cross2(t.p1 - t.p0, t.p2 - t.p0);
+      float b1 = cross2(p - t.p0, t.p2 - t.p0) / area2;
+      float b2 = cross2(t.p1 - t.p0, p - t.p0) / area2;
+      bool inside = b1 >= -1e-6f && b2 >= -1e-6f && b1 + b2 <= 1.0f + 1e-6f;
+      return inside ? 2.0f / std::abs(area2) : 0.0f;
+    };
+    s.lower = vec2(0.0f);
+    s.upper = vec2(1.0f);
+    list.planar("warps", s);
+  }
+}
+
+void add_microfacet_normals(StatisticalList& list) {
+  for (bool beckmann : {false, true}) {
+    for (vec2 alpha : {vec2(0.3f), vec2(0.1f, 0.5f)}) {
+      for (bool visible : {true, false}) {
+        Microfacet d = microfacet_make(beckmann, alpha.x, alpha.y, visible);
+        vec3 wi = tv::direction_from_angles(60.0, 20.0);
+        std::string name = std::string("microfacet ") + (beckmann ? "beckmann" : "ggx") +
+                           " a=" + fmt(alpha.x) + "," + fmt(alpha.y) +
+                           (visible ? " visible" : " all") + " wi=60";
+        list.directions(
+            "microfacet_normals", name, [d, wi](vec2 u) { return microfacet_sample(d, wi, u); },
+            [d, wi](vec3 m) { return microfacet_pdf(d, wi, m); });
+      }
+    }
+  }
+}
+
+void add_bsdfs(StatisticalList& list) {
+  const vec3 gold_eta(0.143f, 0.375f, 1.442f), gold_k(3.983f, 2.386f, 1.603f);
+  if (bsdf_available(diffuse(vec3(0.5f)))) {
+    list.bsdf("diffuse", "diffuse", diffuse(vec3(0.2f, 0.5f, 0.9f)), kOneSided, false);
+    list.bsdf("twosided", "twosided(diffuse)", twosided(diffuse(vec3(0.2f, 0.5f, 0.9f))),
+              kBothSides, false);
+    list.bsdf("mask", "mask(diffuse) opacity=0.3", masked(diffuse(vec3(0.7f)), 0.3f), kOneSided,
+              false);
+  }
+  if (bsdf_available(conductor(gold_eta, gold_k, vec3(1.0f)))) {
+    list.bsdf("conductor", "conductor gold", conductor(gold_eta, gold_k, vec3(1.0f)), kOneSided,
+              false);
+  }
+  if (bsdf_available(dielectric(1.5f, vec3(1.0f), vec3(1.0f)))) {
+    for (float eta : {1.5f, 1.0f / 1.5f, 1.33f}) {
+      list.bsdf("dielectric", "dielectric eta=" + fmt(eta), dielectric(eta, vec3(1.0f), vec3(1.0f)),
+                kBothSides, true);
+    }
+    list.bsdf("mask", "mask(dielectric eta=1.5) opacity=0.6",
+              masked(dielectric(1.5f, vec3(1.0f), vec3(1.0f)), 0.6f), kBothSides, true);
+  }
+  const Distribution distributions[] = {Distribution::ggx, Distribution::beckmann};
+  const vec2 alphas[] = {vec2(0.05f), vec2(0.2f),        vec2(0.5f),
+                         vec2(1.0f),  vec2(0.05f, 0.3f), vec2(0.6f, 0.1f)};
+  if (bsdf_available(
+          roughconductor(Distribution::ggx, 0.1f, 0.1f, true, gold_eta, gold_k, vec3(1.0f)))) {
+    for (Distribution d : distributions) {
+      for (vec2 a : alphas) {
+        for (bool visible : {true, false}) {
+          std::string name = std::string("roughconductor ") + name_of(d) + " a=" + fmt(a.x) +
+                             (a.x == a.y ? "" : "," + fmt(a.y)) + (visible ? " vis" : " all");
+          list.bsdf(std::string("roughconductor_") + name_of(d), name,
+                    roughconductor(d, a.x, a.y, visible, gold_eta, gold_k, vec3(1.0f)), kOneSided,
+                    false);
+        }
+      }
+      std::string name = std::string("twosided(roughconductor ") + name_of(d) + " a=0.3)";
+      list.bsdf("twosided", name,
+                twosided(roughconductor(d, 0.3f, 0.3f, true, gold_eta, gold_k, vec3(1.0f))),
+                kBothSides, false);
+    }
+  }
+  if (bsdf_available(
+          roughdielectric(Distribution::ggx, 0.1f, 0.1f, true, 1.5f, vec3(1.0f), vec3(1.0f)))) {
+    const vec2 rough_alphas[] = {vec2(0.05f), vec2(0.3f), vec2(1.0f), vec2(0.1f, 0.4f)};
+    for (Distribution d : distributions) {
+      for (vec2 a : rough_alphas) {
+        for (float eta : {1.5f, 1.0f / 1.5f, 1.33f}) {
+          for (bool visible : {true, false}) {
+            if (!visible && eta != 1.5f) continue;
+            std::string name = std::string("roughdielectric ") + name_of(d) + " a=" + fmt(a.x) +
+                               (a.x == a.y ? "" : "," + fmt(a.y)) + " eta=" + fmt(eta) +
+                               (visible ? " vis" : " all");
+            list.bsdf(std::string("roughdielectric_") + name_of(d), name,
+                      roughdielectric(d, a.x, a.y, visible, eta, vec3(1.0f), vec3(1.0f)),
+                      kBothSides, true);
+          }
+        }
+      }
+    }
+  }
+  if (bsdf_available(thindielectric(1.5f, vec3(1.0f), vec3(1.0f)))) {
+    for (float eta : {1.5f, 1.33f, 1.0f / 1.5f}) {
+      list.bsdf("thindielectric", "thindielectric eta=" + fmt(eta),
+                thindielectric(eta, vec3(1.0f), vec3(1.0f)), kBothSides, false);
+    }
+  }
+  const vec3 plastic_diffuse(0.5f, 0.3f, 0.1f);
+  if (bsdf_available(plastic(1.5f, plastic_diffuse, vec3(1.0f), false))) {
+    for (float eta : {1.5f, 1.33f}) {
+      for (bool nonlinear : {false, true}) {
+        list.bsdf("plastic", "plastic eta=" + fmt(eta) + (nonlinear ? " nonlinear" : " linear"),
+                  plastic(eta, plastic_diffuse, vec3(1.0f), nonlinear), kOneSided, false);
+      }
+    }
+  }
+  if (bsdf_available(
+          roughplastic(Distribution::ggx, 0.1f, true, 1.5f, plastic_diffuse, vec3(1.0f), false))) {
+    for (Distribution d : distributions) {
+      for (float alpha : {0.05f, 0.3f, 1.0f}) {
+        for (bool nonlinear : {false, true}) {
+          for (bool visible : {true, false}) {
+            std::string name = std::string("roughplastic ") + name_of(d) + " a=" + fmt(alpha) +
+                               (nonlinear ? " nonlinear" : " linear") + (visible ? " vis" : " all");
+            list.bsdf(std::string("roughplastic_") + name_of(d), name,
+                      roughplastic(d, alpha, visible, 1.5f, plastic_diffuse, vec3(1.0f), nonlinear),
+                      kOneSided, false);
+          }
+        }
+      }
+      list.bsdf(std::string("roughplastic_") + name_of(d),
+                std::string("roughplastic ") + name_of(d) + " a=0.3 eta=1.33 linear vis",
+                roughplastic(d, 0.3f, true, 1.33f, plastic_diffuse, vec3(1.0f), false), kOneSided,
+                false);
+    }
+  }
+  if (bsdf_available(principled(PrincipledParameters{}))) {
+    // A grid over the weights: each lobe alone, pairs, and everything at once.
+    struct Setting {
+      const char* name;
+      std::function<void(PrincipledParameters&)> set;
+    };
+    const Setting settings[] = {
+        {"default", [](PrincipledParameters&) {}},
+        {"metallic=1", [](PrincipledParameters& p) { p.metallic = 1.0f; }},
+        {"metallic=0.5 roughness=0.2",
+         [](PrincipledParameters& p) {
+           p.metallic = 0.5f;
+           p.roughness = 0.2f;
+         }},
+        {"anisotropic=0.8 metallic=1",
+         [](PrincipledParameters& p) {
+           p.anisotropic = 0.8f;
+           p.metallic = 1.0f;
+         }},
+        {"sheen=1 sheen_tint=0.5",
+         [](PrincipledParameters& p) {
+           p.sheen = 1.0f;
+           p.sheen_tint = 0.5f;
+         }},
+        {"clearcoat=1 gloss=0.5",
+         [](PrincipledParameters& p) {
+           p.clearcoat = 1.0f;
+           p.clearcoat_gloss = 0.5f;
+         }},
+        {"spec_trans=1 roughness=0.3",
+         [](PrincipledParameters& p) {
+           p.spec_trans = 1.0f;
+           p.roughness = 0.3f;
+         }},
+        {"spec_trans=0.5 eta=1.33",
+         [](PrincipledParameters& p) {
+           p.spec_trans = 0.5f;
+           p.eta = 1.33f;
+         }},
+        {"specular=1 spec_tint=1 roughness=0.1",
+         [](PrincipledParameters& p) {
+           p.specular = 1.0f;
+           p.spec_tint = 1.0f;
+           p.roughness = 0.1f;
+         }},
+        {"all=0.5",
+         [](PrincipledParameters& p) {
+           p.metallic = p.spec_tint = p.anisotropic = p.sheen = p.sheen_tint = 0.5f;
+           p.clearcoat = p.clearcoat_gloss = p.spec_trans = 0.5f;
+         }},
+        {"sampling_rates=(0.2,1,2)",
+         [](PrincipledParameters& p) {
+           p.clearcoat = 0.7f;
+           p.sampling_rates = vec3(0.2f, 1.0f, 2.0f);
+         }},
+    };
+    for (const Setting& s : settings) {
+      PrincipledParameters p;
+      p.base_color = vec3(0.8f, 0.5f, 0.2f);
+      s.set(p);
+      bool transmissive = p.spec_trans > 0.0f;
+      list.bsdf("principled", std::string("principled ") + s.name, principled(p),
+                transmissive ? kBothSides : kOneSided, transmissive);
+    }
+  }
+}
+
+// ---- Extremes ---------------------------------------------------------------------------
+
+const float kAlphas[] = {1e-4f, 1e-3f, 0.01f, 0.1f, 0.5f, 1.0f};
+const float kEtas[] = {1.0f, 1.0001f, 1.33f, 1.5f, 2.42f, 4.0f, 1.0f / 1.5f};
+const vec3 kReflectances[] = {vec3(0.0f), vec3(1.0f)};
+
+std::vector<ExtremesCase> build_extremes() {
+  std::vector<ExtremesCase> cases;
+  auto add = [&](const std::string& family, const std::string& name, const Material& m) {
+    if (bsdf_available(m)) cases.push_back({family, core_bsdf(name, m)});
+  };
+  for (vec3 r : kReflectances) {
+    add("diffuse", "diffuse r=" + fmt(r.x), diffuse(r));
+    add("twosided", "twosided(diffuse r=" + fmt(r.x) + ")", twosided(diffuse(r)));
+    for (float opacity : {0.0f, 0.5f, 1.0f}) {
+      add("mask", "mask(diffuse r=" + fmt(r.x) + ") opacity=" + fmt(opacity),
+          masked(diffuse(r), opacity));
+    }
+  }
+  const vec2 conductor_iors[] = {vec2(0.0f, 1.0f), vec2(0.2f, 3.9f), vec2(1.5f, 0.0f),
+                                 vec2(4.0f, 1e-4f), vec2(1.0f, 0.0f)};
+  for (vec2 ior : conductor_iors) {
+    for (vec3 r : kReflectances) {
+      std::string p = " eta=" + fmt(ior.x) + " k=" + fmt(ior.y) + " r=" + fmt(r.x);
+      add("conductor", "conductor" + p, conductor(vec3(ior.x), vec3(ior.y), r));
+      for (Distribution d : {Distribution::ggx, Distribution::beckmann}) {
+        for (bool visible : {true, false}) {
+          for (float a : kAlphas) {
+            std::string family = std::string("roughconductor_") + name_of(d);
+            std::string v = visible ? " vis" : " all";
+            add(family, "roughconductor " + std::string(name_of(d)) + " a=" + fmt(a) + v + p,
+                roughconductor(d, a, a, visible, vec3(ior.x), vec3(ior.y), r));
+            add(family, "roughconductor " + std::string(name_of(d)) + " a=" + fmt(a) + ",1" + v + p,
+                roughconductor(d, a, 1.0f, visible, vec3(ior.x), vec3(ior.y), r));
+          }
+        }
+      }
+    }
+  }
+  for (float eta : kEtas) {
+    for (vec3 r : kReflectances) {
+      for (vec3 t : kReflectances) {
+        std::string p = " eta=" + fmt(eta) + " r=" + fmt(r.x) + " t=" + fmt(t.x);
+        add("dielectric", "dielectric" + p, dielectric(eta, r, t));
+        add("thindielectric", "thindielectric" + p, thindielectric(eta, r, t));
+        add("mask", "mask(dielectric" + p + ") opacity=0.5", masked(dielectric(eta, r, t), 0.5f));
+        for (Distribution d : {Distribution::ggx, Distribution::beckmann}) {
+          for (bool visible : {true, false}) {
+            for (float a : kAlphas) {
+              add(std::string("roughdielectric_") + name_of(d),
+                  "roughdielectric " + std::string(name_of(d)) + " a=" + fmt(a) +
+                      (visible ? " vis" : " all") + p,
+                  roughdielectric(d, a, a, visible, eta, r, t));
+            }
+          }
+        }
+      }
+      for (vec3 diff : kReflectances) {
+        for (bool nonlinear : {false, true}) {
+          std::string p = " eta=" + fmt(eta) + " d=" + fmt(diff.x) + " s=" + fmt(r.x) +
+                          (nonlinear ? " nonlinear" : " linear");
+          add("plastic", "plastic" + p, plastic(eta, diff, r, nonlinear));
+          for (Distribution d : {Distribution::ggx, Distribution::beckmann}) {
+            for (float a : kAlphas) {
+              add(std::string("roughplastic_") + name_of(d),
+                  "roughplastic " + std::string(name_of(d)) + " a=" + fmt(a) + p,
+                  roughplastic(d, a, true, eta, diff, r, nonlinear));
+            }
+          }
+        }
+      }
+    }
+  }
+  // principled: every weight at 0, 0.5 and 1 (one at a time from the all-0.5 setting), all at
+  // 0 and all at 1, over the roughness and eta grids and black/white base colour.
+  auto weights = [](PrincipledParameters& p, float w) {
+    p.metallic = p.specular = p.spec_tint = p.anisotropic = p.sheen = p.sheen_tint = w;
+    p.clearcoat = p.clearcoat_gloss = p.spec_trans = w;
+  };
+  float PrincipledParameters::*fields[] = {
+      &PrincipledParameters::metallic,  &PrincipledParameters::specular,
+      &PrincipledParameters::spec_tint, &PrincipledParameters::anisotropic,
+      &PrincipledParameters::sheen,     &PrincipledParameters::sheen_tint,
+      &PrincipledParameters::clearcoat, &PrincipledParameters::clearcoat_gloss,
+      &PrincipledParameters::spec_trans};
+  const char* field_names[] = {"metallic",   "specular",  "spec_tint",       "anisotropic", "sheen",
+                               "sheen_tint", "clearcoat", "clearcoat_gloss", "spec_trans"};
+  for (vec3 base : kReflectances) {
+    for (float roughness : {0.0f, 0.01f, 0.5f, 1.0f}) {
+      for (float eta : kEtas) {
+        for (float all : {0.0f, 1.0f}) {
+          PrincipledParameters p;
+          weights(p, all);
+          p.base_color = base;
+          p.roughness = roughness;
+          p.eta = eta;
+          add("principled",
+              "principled all=" + fmt(all) + " base=" + fmt(base.x) +
+                  " roughness=" + fmt(roughness) + " eta=" + fmt(eta),
+              principled(p));
+        }
+      }
+      for (int f = 0; f < 9; ++f) {
+        for (float w : {0.0f, 0.5f, 1.0f}) {
+          PrincipledParameters p;
+          weights(p, 0.5f);
+          p.*fields[f] = w;
+          p.base_color = base;
+          p.roughness = roughness;
+          add("principled",
+              std::string("principled ") + field_names[f] + "=" + fmt(w) + " base=" + fmt(base.x) +
+                  " roughness=" + fmt(roughness),
+              principled(p));
+        }
+      }
+    }
+  }
+  return cases;
+}
+
+std::vector<std::string> families_of(const std::vector<std::string>& all) {
+  std::vector<std::string> unique;
+  for (const std::string& f : all) {
+    if (std::find(unique.begin(), unique.end(), f) == unique.end()) unique.push_back(f);
+  }
+  return unique;
+}
+
+}  // namespace
+
+const std::vector<StatisticalCase>& statistical_cases() {
+  static const std::vector<StatisticalCase> cases = [] {
+    StatisticalList list;
+    add_warps(list);
+    add_microfacet_normals(list);
+    add_bsdfs(list);
+    return list.cases;
+  }();
+  return cases;
+}
+
+const std::vector<ExtremesCase>& extremes_cases() {
+  static const std::vector<ExtremesCase> cases = build_extremes();
+  return cases;
+}
+
+std::size_t statistical_test_count() {
+  std::size_t n = 0;
+  for (const StatisticalCase& c : statistical_cases()) {
+    if (c.bsdf)
+      n += tv::statistical_test_count(*c.bsdf, c.incident.size());
+    else
+      n += 1;
+    if (c.energy) n += c.incident.size();
+  }
+  return n;
+}
+
+double alpha_per_test() { return tv::sidak_alpha(kSignificance, statistical_test_count()); }
+
+std::vector<std::string> statistical_families() {
+  std::vector<std::string> all;
+  for (const StatisticalCase& c : statistical_cases()) all.push_back(c.family);
+  return families_of(all);
+}
+
+std::vector<std::string> extremes_families() {
+  std::vector<std::string> all;
+  for (const ExtremesCase& c : extremes_cases()) all.push_back(c.family);
+  return families_of(all);
+}
+
+tv::Report run_statistical_family(const std::string& family) {
+  SuiteSize size = suite_size();
+  double alpha = alpha_per_test();
+  tv::Report report;
+  std::uint64_t seed = 0;
+  for (const StatisticalCase& c : statistical_cases()) {
+    ++seed;
+    if (c.family != family) continue;
+    tv::ChiSquareOptions chi = size.chi_square;
+    chi.seed = 0x7715ull * seed;
+    if (c.directions) {
+      report.checks.push_back(tv::report_line(c.directions->name, glm::vec3(0.0f),
+                                              tv::chi_square_directions(*c.directions, chi),
+                                              alpha));
+    }
+    if (c.planar) {
+      report.checks.push_back(tv::report_line(c.planar->name, glm::vec3(0.0f),
+                                              tv::chi_square_planar(*c.planar, chi), alpha));
+    }
+    if (c.bsdf) {
+      tv::ValidationOptions o;
+      o.chi_square = chi;
+      o.consistency = size.consistency;
+      o.consistency.seed = chi.seed + 1;
+      o.albedo_samples = size.albedo_samples;
+      o.extreme_random_draws = size.extreme_random_draws;
+      o.significance = kSignificance;
+      o.alpha_per_test = alpha;
+      report.append(tv::validate_bsdf(*c.bsdf, c.incident, o));
+    }
+    if (c.energy) {
+      std::uint64_t k = 0;
+      for (const glm::vec3& wi : c.incident) {
+        tv::AlbedoResult a =
+            tv::albedo_test(*c.energy, wi, size.albedo_samples, chi.seed + 31 * ++k);
+        report.checks.push_back(tv::report_line(c.energy->name, wi, a, alpha));
+      }
+    }
+  }
+  return report;
+}
+
+tv::Report run_extremes_family(const std::string& family) {
+  SuiteSize size = suite_size();
+  tv::Report report;
+  std::vector<glm::vec3> incident = tv::extreme_incident_directions();
+  std::uint64_t seed = 0;
+  for (const ExtremesCase& c : extremes_cases()) {
+    ++seed;
+    if (c.family != family) continue;
+    report.checks.push_back(tv::report_line(
+        c.bsdf.name, tv::extremes_check(c.bsdf, incident, size.extreme_random_draws, seed)));
+  }
+  return report;
+}
+
+}  // namespace tr::bsdf_suite

@@ -1,0 +1,37 @@
+#include "suite_size.h"
+
+namespace tr::bsdf_suite {
+
+bool& full_size() {
+#ifdef TWINRAY_FULL_TESTS
+  static bool full = true;
+#else
+  static bool full = false;
+#endif
+  return full;
+}
+
+SuiteSize suite_size() {
+  SuiteSize s;
+  if (full_size()) {
+    s.chi_square.sample_count = 2000000;
+    s.chi_square.cos_theta_bins = 20;
+    s.chi_square.phi_bins = 40;
+    s.consistency.sample_count = 200000;
+    s.consistency.random_pairs = 200000;
+    s.albedo_samples = 1000000;
+    s.extreme_random_draws = 1024;
+  } else {
+    s.chi_square.sample_count = 200000;
+    s.chi_square.cos_theta_bins = 10;
+    s.chi_square.phi_bins = 20;
+    s.consistency.sample_count = 20000;
+    s.consistency.random_pairs = 20000;
+    s.albedo_samples = 50000;
+    s.extreme_random_draws = 64;
+  }
+  s.chi_square.integration_tolerance = 0.01 / double(s.chi_square.sample_count);
+  return s;
+}
+
+}  // namespace tr::bsdf_suite

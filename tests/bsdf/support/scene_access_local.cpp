@@ -1,0 +1,36 @@
+// core/scene_access.h for the BSDF validation suite: materials, textures and texels come from
+// small local vectors (the suite uses constant parameters, so they stay empty); everything else
+// is out of scope here and throws.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/scene_access.h"
+
+namespace tr {
+namespace {
+
+std::vector<Material> materials;
+std::vector<Texture> textures;
+std::vector<vec4> texels;
+
+[[noreturn]] void out_of_scope(const char* what) {
+  throw std::logic_error(std::string(what) + " is not available in tests/bsdf");
+}
+
+}  // namespace
+
+SceneGlobals scene_globals() { out_of_scope("scene_globals"); }
+Material scene_material(uint index) { return materials.at(index); }
+Texture scene_texture(uint index) { return textures.at(index); }
+vec4 scene_texel(uint index) { return texels.at(index); }
+Emitter scene_emitter(uint) { out_of_scope("scene_emitter"); }
+AliasEntry scene_alias(uint) { out_of_scope("scene_alias"); }
+Shape scene_shape(uint) { out_of_scope("scene_shape"); }
+Instance scene_instance(uint) { out_of_scope("scene_instance"); }
+vec3 scene_position(uint) { out_of_scope("scene_position"); }
+vec3 scene_normal(uint) { out_of_scope("scene_normal"); }
+vec2 scene_uv(uint) { out_of_scope("scene_uv"); }
+uint scene_index(uint) { out_of_scope("scene_index"); }
+
+}  // namespace tr
