@@ -108,6 +108,28 @@ TEST_F(Acceptance, TwoPercentScaleFails) {
   }
 }
 
+// The gain test's margin: on test_textured_diffuse (low noise) a noise-free 0.3% gain is
+// resolved (it fails with no margin) but counts as no bias under the default 0.5% margin,
+// while 1% fails either way.
+TEST(GainMargin, SmallGainsPassOnlyWithinTheMargin) {
+  const std::string base =
+      testing::shared_dir() +
+      "/mitsuba-tests/tests/scenes/bsdf_spheres/refs/test_textured_diffuse_ref_rgb";
+  RgbImage ref = read_rgb(base + ".exr"), var = read_rgb(base + "_var.exr");
+  auto scaled = [&](double k) {
+    RgbImage img = ref;
+    for (double& v : img.rgb) v *= k;
+    return img;
+  };
+  VarianceTestOptions exact;
+  exact.gain_margin = 0.0;
+  EXPECT_TRUE(gain_z_test(scaled(1.003), kSpp, ref, var, kReferenceSpp).passed);
+  EXPECT_FALSE(gain_z_test(scaled(1.003), kSpp, ref, var, kReferenceSpp, exact).passed);
+  HypothesisTestResult one_percent = gain_z_test(scaled(1.01), kSpp, ref, var, kReferenceSpp);
+  EXPECT_FALSE(one_percent.passed);
+  EXPECT_NEAR(one_percent.gain[1], 1.01, 1e-4);
+}
+
 TEST_F(Acceptance, OneBlockTenPercentOffFailsBlockTestAndLockstep) {
   int bx = 0, by = 0;
   best_determined_block(&bx, &by);

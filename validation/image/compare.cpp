@@ -112,7 +112,8 @@ CompareReport compare_images(const CompareInputs& in, const CompareOptions& opti
 
 namespace {
 
-void write_test(JsonWriter& j, const HypothesisTestResult& t, double family_alpha) {
+void write_test(JsonWriter& j, const HypothesisTestResult& t, double family_alpha,
+                double gain_margin) {
   const char* channels[3] = {"X", "Y", "Z"};
   j.begin_object()
       .field("passed", t.passed)
@@ -129,8 +130,10 @@ void write_test(JsonWriter& j, const HypothesisTestResult& t, double family_alph
              t.values ? double(t.values - t.failing_values) / double(t.values) : 0.0)
       .field("min_p", t.min_p)
       .field("max_statistic", t.max_statistic);
-  if (t.name.rfind("gain", 0) == 0)
+  if (t.name.rfind("gain", 0) == 0) {
     j.key("gain_xyz").begin_array().value(t.gain[0]).value(t.gain[1]).value(t.gain[2]).end_array();
+    j.field("gain_margin", gain_margin);
+  }
   j.key("min_p_at").begin_object();
   if (t.min_p_channel >= 0)
     j.field("cell_x", t.min_p_x)
@@ -193,7 +196,7 @@ std::string compare_report_json(const CompareReport& r, const CompareOptions& op
   for (const std::optional<HypothesisTestResult>* t : r.tests())
     if (*t) {
       j.key((*t)->name);
-      write_test(j, **t, options.variance.family_alpha);
+      write_test(j, **t, options.variance.family_alpha, options.variance.gain_margin);
     }
   j.end_object();
 

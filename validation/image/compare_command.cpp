@@ -30,6 +30,7 @@ Inputs of the statistical tests:
   --pass-fraction F     per-pixel tests: required fraction of passing values (default 0.9975)
   --min-variance V      XYZ variance clamp (default 1e-4)
   --block N             block size of the block tests (default 4)
+  --gain-margin M       gain test: |k - 1| <= M counts as no bias (default 0.005)
 
 Lockstep agreement (two renders with the same sampler seed; always reported):
   --lockstep            make lockstep agreement decide the verdict
@@ -123,7 +124,10 @@ Arguments parse(int argc, char** argv) {
           parse_probability(flag, next());
     else if (flag == "--pass-fraction")
       a.options.variance.pass_fraction = parse_probability(flag, next());
-    else if (flag == "--min-variance")
+    else if (flag == "--gain-margin") {
+      a.options.variance.gain_margin = parse_number(flag, next());
+      if (a.options.variance.gain_margin < 0.0) throw UsageError(flag + ": must not be negative");
+    } else if (flag == "--min-variance")
       a.options.variance.min_variance = parse_positive(flag, next());
     else if (flag == "--block") {
       double b = parse_positive(flag, next());

@@ -108,7 +108,8 @@ HypothesisTestResult evaluate(const std::string& name, int block, const Differen
 // regressor r shares with d through their common noise, so that E0[Z] = 0 and Var0[Z] = 1.
 // (Σ w d - Σ bias / v) / Σ w² v estimates k - 1.
 HypothesisTestResult gain_test(const std::string& name, const RgbImage& d, const RgbImage& v,
-                               const RgbImage& r, const RgbImage& bias, double family_alpha) {
+                               const RgbImage& r, const RgbImage& bias, double family_alpha,
+                               double margin) {
   double numerator[3] = {0, 0, 0}, information[3] = {0, 0, 0};
   for (size_t i = 0; i < d.rgb.size(); ++i) {
     numerator[i % 3] += (r.rgb[i] * d.rgb[i] - bias.rgb[i]) / v.rgb[i];
@@ -117,8 +118,11 @@ HypothesisTestResult gain_test(const std::string& name, const RgbImage& d, const
   Differences combined;
   combined.delta = RgbImage{1, 1, {0.0, 0.0, 0.0}};
   combined.variance = combined.delta;
+  // With k̂ - 1 = numerator / information and SE(k̂) = 1 / sqrt(information), the statistic
+  // max(0, |k̂ - 1| - margin) / SE tests H0: |k - 1| <= margin; its two-sided normal p-value
+  // bounds the size at the boundary k - 1 = ±margin (Φc(z) + Φc(z + 2 margin / SE) <= 2 Φc(z)).
   for (int c = 0; c < 3; ++c) {
-    combined.delta.rgb[c] = numerator[c];
+    combined.delta.rgb[c] = std::max(0.0, std::fabs(numerator[c]) - margin * information[c]);
     combined.variance.rgb[c] = information[c];
   }
   combined.dof = filled_like(combined.delta, kInfinity);
@@ -189,7 +193,7 @@ HypothesisTestResult gain_z_test(const RgbImage& img, double spp, const RgbImage
     bias.rgb[i] = -std::max(v.rgb[i], 0.0) / ref_spp;
     v.rgb[i] = std::max(v.rgb[i], options.min_variance) * (1.0 / spp + 1.0 / ref_spp);
   }
-  return gain_test("gain_z", d, v, r, bias, options.family_alpha);
+  return gain_test("gain_z", d, v, r, bias, options.family_alpha, options.gain_margin);
 }
 
 namespace {

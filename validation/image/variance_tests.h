@@ -24,7 +24,11 @@
 // (independent sampler, box filter). The reference's own noise enters both ref and d; its
 // covariance E[ref d] = -var / ref_spp is subtracted from the numerator. The three channels are
 // tested two-sided at 1 - (1 - family_alpha)^(1/3). Any bias that mostly keeps one sign where
-// the image is bright (a scale, a missing cosine) adds up in Z. The weights must come from a
+// the image is bright (a scale, a missing cosine) adds up in Z. The test resolves gains far
+// below the accuracy of the references themselves (measured: a correct render of
+// test_directional shows k = 1.0006, p = 2e-9, within the float32 accumulation and
+// spectral-to-RGB differences of Mitsuba's reference), so it tests H0: |k - 1| <= gain_margin
+// (default 0.5%, a quarter of the 2% it must catch) rather than k = 1. The weights must come from a
 // well-converged reference: with a low-spp variance estimate in the weights, heavy-tailed
 // pixels (high mean and high sample variance together) bias Z (measured: an apparent gain of
 // 0.983 between a correct 868-spp render and the reference), so there is no Welch variant.
@@ -42,6 +46,7 @@ struct VarianceTestOptions {
   double pass_fraction = 0.9975;  // per-pixel rule only
   double min_variance = 1e-4;     // XYZ variance clamp
   int block = 4;                  // block rule cell size in pixels
+  double gain_margin = 0.005;     // gain rule: |k - 1| up to this counts as no bias
 };
 
 struct HypothesisTestResult {
