@@ -122,7 +122,7 @@ void SceneBuilder::add_emitter(Node& n) {
           fail(find_property(n, "filename")->loc, describe(n), ": negative radiance in the map");
       }
     }
-    e.radiance = vec3(1.0f);
+    e.radiance = vec3(1.0f);  // the map itself holds the radiance (times `scale`)
     pe.mean_luminance = mean / solid_angle_weight;  // for the power estimate
     std::vector<AliasEntry> table;
     try {

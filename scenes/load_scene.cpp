@@ -4,7 +4,7 @@
 
 namespace tr {
 
-SceneBuilder::SceneBuilder(ParsedScene parsed, const LoadOptions& options, const std::string& path)
+SceneBuilder::SceneBuilder(ParsedScene parsed, const std::string& path)
     : parsed_(std::move(parsed)), b_(scene_.buffers) {
   scene_.path = path;
 }
@@ -71,7 +71,7 @@ Scene SceneBuilder::build() {
 }
 
 Scene load_scene(const std::string& xml_path, const LoadOptions& options) {
-  SceneBuilder builder(parse_scene_xml(xml_path, options), options, xml_path);
+  SceneBuilder builder(parse_scene_xml(xml_path, options), xml_path);
   return builder.build();
 }
 

@@ -39,7 +39,7 @@ struct AxisBox {
 
 class SceneBuilder {
  public:
-  SceneBuilder(ParsedScene parsed, const LoadOptions& options, const std::string& path);
+  SceneBuilder(ParsedScene parsed, const std::string& path);
   Scene build();
 
  private:
