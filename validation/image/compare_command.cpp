@@ -224,8 +224,11 @@ void print_report(const CompareReport& r, const CompareOptions& o) {
   const LockstepResult& l = r.lockstep;
   std::printf(
       "  lockstep     %s  %.6f of pixels within rel %.3g abs %.3g; %zu systematic cells%s\n",
-      l.passed ? "pass" : "FAIL", l.fraction_within, o.lockstep_options.rel, o.lockstep_options.abs,
-      l.systematic_cells, r.lockstep_decides ? "" : " (informational)");
+      !r.lockstep_decides ? "info"
+      : l.passed          ? "pass"
+                          : "FAIL",
+      l.fraction_within, o.lockstep_options.rel, o.lockstep_options.abs, l.systematic_cells,
+      r.lockstep_decides ? "" : " (not a criterion without --lockstep)");
   if (r.lockstep_decides)
     for (const LockstepPixel& p : l.worst)
       if (p.excess > 1.0)
