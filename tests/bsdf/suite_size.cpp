@@ -30,7 +30,9 @@ SuiteSize suite_size() {
     s.albedo_samples = 50000;
     s.extreme_random_draws = 64;
   }
-  s.chi_square.integration_tolerance = 0.01 / double(s.chi_square.sample_count);
+  // A bin's expected count is then off by at most 0.1 draws: (0.1)^2 / 5 adds < 0.002 to X^2
+  // per bin even at the pooling threshold.
+  s.chi_square.integration_tolerance = 0.1 / double(s.chi_square.sample_count);
   return s;
 }
 

@@ -103,8 +103,8 @@ struct ChiSquareOptions {
   /// Absolute tolerance of the adaptive Gauss-Kronrod integral of the density over one bin,
   /// as a probability (one draw in `sample_count` ≙ 1/sample_count).
   double integration_tolerance = 1e-8;
-  int integration_min_depth = 1;  ///< Forced bisections per bin and axis before adapting.
-  int integration_max_depth = 14;
+  int integration_min_depth = 0;  ///< Forced bisections per bin and axis before adapting.
+  int integration_max_depth = 12;
   std::uint64_t seed = 1;
 };
 

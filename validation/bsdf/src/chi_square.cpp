@@ -39,7 +39,7 @@ struct Grid {
 
 void check_options(const ChiSquareOptions& o) {
   if (o.sample_count == 0 || o.cos_theta_bins < 1 || o.phi_bins < 1 || o.min_expected <= 0.0 ||
-      o.integration_tolerance <= 0.0 || o.integration_min_depth < 1 ||
+      o.integration_tolerance <= 0.0 || o.integration_min_depth < 0 ||
       o.integration_max_depth < o.integration_min_depth) {
     throw std::invalid_argument("ChiSquareOptions out of range");
   }
