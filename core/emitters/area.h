@@ -125,7 +125,9 @@ INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) 
     s.pdf = dist2 / (cos_l * shape.area);
   }
   // One-sided emission: only the side the normal faces emits (Mitsuba's area emitter).
-  if (!(dot(s.n, s.d) < 0.0f)) {
+  // Points seen exactly edge-on (the reference point in the emitter's own plane) have an
+  // unbounded density and carry no energy: the sample fails.
+  if (!(dot(s.n, s.d) < 0.0f) || !(s.pdf < FLOAT_MAX)) {
     s.pdf = 0.0f;
     return s;
   }
