@@ -239,6 +239,22 @@ TexturedValue SceneBuilder::roughplastic_table(const Material& m) {
   return v;
 }
 
+// Mean over the surface of a parameter (Mitsuba's Texture::mean): the constant's channel
+// mean, a bitmap's mean texel, a checkerboard's mean of its two colours.
+double SceneBuilder::textured_mean(const TexturedValue& v) const {
+  if (v.texture == NO_INDEX) return (double(v.value.x) + v.value.y + v.value.z) / 3.0;
+  const Texture& t = b_.textures[v.texture];
+  if (t.type == TEXTURE_CHECKERBOARD)
+    return (double(t.color0.x) + t.color0.y + t.color0.z + t.color1.x + t.color1.y + t.color1.z) / 6.0;
+  double sum = 0.0;
+  size_t count = size_t(t.width) * t.height;
+  for (size_t i = 0; i < count; ++i) {
+    const vec4& texel = b_.texels[t.texel_offset + i];
+    sum += (double(texel.x) + texel.y + texel.z) / 3.0;
+  }
+  return count ? sum / double(count) : 0.0;
+}
+
 Material SceneBuilder::build_material(Node& n) {
   const std::string& type = n.type;
   Material m;
@@ -319,6 +335,10 @@ Material SceneBuilder::build_material(Node& n) {
     m.param[PLASTIC_SPECULAR_REFLECTANCE] =
         textured(n, "specular_reflectance", glm::dvec3(1.0), false);
     if (take_bool(n, "nonlinear", false)) m.flags |= MATERIAL_NONLINEAR;
+    // Mitsuba's specular sampling weight s_mean / (d_mean + s_mean), means over the textures.
+    double d_mean = textured_mean(m.param[PLASTIC_DIFFUSE_REFLECTANCE]);
+    double s_mean = textured_mean(m.param[PLASTIC_SPECULAR_REFLECTANCE]);
+    m.extra = d_mean + s_mean > 0.0 ? float(s_mean / (d_mean + s_mean)) : 0.5f;
     if (type == "roughplastic") {
       microfacet_flags(n, m);
       if (has_property(n, "alpha_u") || has_property(n, "alpha_v"))

@@ -57,6 +57,7 @@ class SceneBuilder {
   Material build_material(Node& bsdf);
   Material build_principled(Node& bsdf);
   TexturedValue roughplastic_table(const Material& m);
+  double textured_mean(const TexturedValue& v) const;
   // A BSDF parameter that may be a texture. `scalar`: Mitsuba reads it with eval_1 (one value).
   TexturedValue textured(Node& owner, const std::string& name, glm::dvec3 default_value,
                          bool scalar);
