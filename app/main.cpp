@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   if (verb == "devices") return tr::devices_command(argc - 2, argv + 2);
 #endif
 #ifdef TWINRAY_HAS_COMPARE
-  if (verb == "compare") return tr::compare_command(argc - 2, argv + 2);
+  if (verb == "compare") return tr::compare_command(argc - 1, argv + 1);
 #endif
   std::fprintf(stderr, "twinray: unknown verb '%s'\n%s", verb.c_str(), kUsage);
   return tr::kExitUsage;
