@@ -126,11 +126,28 @@ INLINE float microfacet_g(Microfacet d, vec3 wi, vec3 wo, vec3 m) {
   return microfacet_smith_g1(d, wi, m) * microfacet_smith_g1(d, wo, m);
 }
 
+// Smith's G1 = 1 / (1 + Lambda) without approximation (Heitz 2014, eqs. 72 and 86:
+// Lambda = (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)) for Beckmann, a = 1 / (alpha tan)):
+// the masking that the visible-normal sampler realises. The BSDFs evaluate Mitsuba's G1
+// (Walter's rational fit for Beckmann), the densities this one, so that the density of the
+// sampled normals integrates to one and equals what the sampler draws.
+INLINE float microfacet_smith_g1_exact(Microfacet d, vec3 v, vec3 m) {
+  if (!d.beckmann) return microfacet_smith_g1(d, v, m);
+  float xy_alpha_2 = sqr(d.alpha_u * v.x) + sqr(d.alpha_v * v.y);
+  if (dot(v, m) * v.z <= 0.0f) return 0.0f;
+  if (xy_alpha_2 == 0.0f) return 1.0f;
+  float a = abs(v.z) / sqrt(xy_alpha_2);
+  float lambda = 0.5f * (beckmann_erf(a) - 1.0f) + exp(-a * a) / (2.0f * a) * INV_SQRT_PI;
+  return 1.0f / (1.0f + max(lambda, 0.0f));
+}
+
 // Solid-angle density of microfacet_sample: D(m) cos(theta_m), or the distribution of visible
 // normals D_wi(m) = G1(wi, m) |wi.m| D(m) / cos(theta_i) (Heitz & d'Eon 2014, eq. 2).
 INLINE float microfacet_pdf(Microfacet d, vec3 wi, vec3 m) {
   float result = microfacet_d(d, m);
-  if (d.sample_visible) return result * microfacet_smith_g1(d, wi, m) * abs(dot(wi, m)) / wi.z;
+  if (d.sample_visible) {
+    return result * microfacet_smith_g1_exact(d, wi, m) * abs(dot(wi, m)) / wi.z;
+  }
   return result * m.z;
 }
 

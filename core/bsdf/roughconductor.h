@@ -38,9 +38,7 @@ INLINE float roughconductor_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   vec3 h = normalize(wi + wo);
   if (wi.z <= 0.0f || wo.z <= 0.0f || dot(wi, h) <= 0.0f || dot(wo, h) <= 0.0f) return 0.0f;
   Microfacet d = roughconductor_distribution(m, uv);
-  // Density of h (microfacet_pdf) times dh/dwo = 1 / (4 wo.h); for visible normals
-  // G1 D (wi.h) / cos_i / (4 wo.h) = G1 D / (4 cos_i) since wi.h = wo.h.
-  if (d.sample_visible) return microfacet_d(d, h) * microfacet_smith_g1(d, wi, h) / (4.0f * wi.z);
+  // Density of h times dh/dwo = 1 / (4 wo.h) (Walter et al. 2007, eq. 14).
   return microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
 }
 

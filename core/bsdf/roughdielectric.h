@@ -122,13 +122,16 @@ INLINE BsdfSample roughdielectric_sample(Material m, vec2 uv, vec3 wi, float u1,
   if (reflect ? !(wo.z * cos_i > 0.0f) : !(wo.z * cos_i < 0.0f)) return bsdf_sample_failed();
   float pdf = roughdielectric_pdf_half(d, wi, wo, h, eta_it, m.eta, reflect);
   // weight = f cos_o / pdf: the Fresnel factor cancels with the lobe probability, leaving
-  // G1(wo, h) for visible normals and G (wi.h) D(h) / (cos_i cos_h D'(h)) otherwise (Walter
-  // et al. eq. 41; D' the widened sampling distribution — Mitsuba 3 omits D / D' here, which
-  // makes its weights disagree with its pdf), times the tint and, for refraction, the
-  // radiance scaling eta_ti^2.
+  // G1(wo, h) G1(wi, h) / G1*(wi, h) for visible normals (G1* the exact masking of the
+  // sampled density; Mitsuba's G1(wo, h) assumes both equal, which for Beckmann holds to
+  // 0.35%) and G (wi.h) D(h) / (cos_i cos_h D'(h)) otherwise (Walter et al. eq. 41; D' the
+  // widened sampling distribution — Mitsuba 3 omits D / D' here, which makes its weights
+  // disagree with its pdf), times the tint and, for refraction, the radiance scaling eta_ti^2.
   float g;
   if (d.sample_visible) {
-    g = microfacet_smith_g1(d, wo, h);
+    float g1_sampled = microfacet_smith_g1_exact(d, wi, h);
+    if (!(g1_sampled > 0.0f)) return bsdf_sample_failed();
+    g = microfacet_smith_g1(d, wo, h) * (microfacet_smith_g1(d, wi, h) / g1_sampled);
   } else {
     float d_sampled = microfacet_d(ds, h);
     if (!(d_sampled > 0.0f)) return bsdf_sample_failed();

@@ -69,9 +69,7 @@ INLINE float roughplastic_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   Microfacet d = roughplastic_distribution(m);
   vec3 h = normalize(wo + wi);
   // Half-vector density times dh/dwo = 1 / (4 wo.h), as for roughconductor.
-  float specular = d.sample_visible
-                       ? microfacet_d(d, h) * microfacet_smith_g1(d, wi, h) / (4.0f * wi.z)
-                       : microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
+  float specular = microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
   return p_specular * specular + (1.0f - p_specular) * square_to_cosine_hemisphere_pdf(wo);
 }
 
