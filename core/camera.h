@@ -24,36 +24,68 @@ INLINE float erf_approx(float x) {
   return s * y;
 }
 
-// Mitsuba's gaussian filter, shifted to reach zero at the radius r:
-// f(x) = max(0, exp(-x^2 / 2 sigma^2) - exp(-r^2 / 2 sigma^2)).
-INLINE float gaussian_filter_1d(float x, float sigma, float r) {
-  float k = -0.5f / (sigma * sigma);
-  return max(0.0f, exp(k * x * x) - exp(k * r * r));
+// Inverse error function, Giles, "Approximating the erfinv function", GPU Computing Gems
+// Jade Edition ch. 10 (2011), single-precision version.
+INLINE float erfinv_approx(float x) {
+  float w = -log((1.0f - x) * (1.0f + x));
+  float p;
+  if (w < 5.0f) {
+    w = w - 2.5f;
+    p = 2.81022636e-08f;
+    p = 3.43273939e-07f + p * w;
+    p = -3.5233877e-06f + p * w;
+    p = -4.39150654e-06f + p * w;
+    p = 0.00021858087f + p * w;
+    p = -0.00125372503f + p * w;
+    p = -0.00417768164f + p * w;
+    p = 0.246640727f + p * w;
+    p = 1.50140941f + p * w;
+  } else {
+    w = sqrt(w) - 3.0f;
+    p = -0.000200214257f;
+    p = 0.000100950558f + p * w;
+    p = 0.00134934322f + p * w;
+    p = -0.00367342844f + p * w;
+    p = 0.00573950773f + p * w;
+    p = -0.0076224613f + p * w;
+    p = 0.00943887047f + p * w;
+    p = 1.00167406f + p * w;
+    p = 2.83297682f + p * w;
+  }
+  return p * x;
 }
 
-// Integral of gaussian_filter_1d over [-r, r].
-INLINE float gaussian_filter_1d_integral(float sigma, float r) {
-  return sigma * sqrt(2.0f * PI) * erf_approx(r / (sigma * sqrt(2.0f))) -
-         2.0f * r * exp(-0.5f * r * r / (sigma * sigma));
+// One axis of the gaussian filter, importance sampled: x follows the normal density of
+// standard deviation sigma truncated to [-r, r], by inversion of its CDF (pbrt-v4 §A.4.2
+// for the truncated-normal inversion); the returned weight f(x) / (pdf(x) integral(f)) makes
+// the estimate that of the normalized filter. It is 1 - exp(-(r^2 - x^2) / 2 sigma^2) up to a
+// constant, so nearly uniform (pbrt-v4 §8.8.2, filter importance sampling).
+INLINE float sample_gaussian_filter_1d(float u, float sigma, float r, OUT(float) weight) {
+  float e = erf_approx(r / (sigma * sqrt(2.0f)));
+  float x = clamp(sigma * sqrt(2.0f) * erfinv_approx(e * (2.0f * u - 1.0f)), -r, r);
+  float gauss_integral = sigma * sqrt(2.0f * PI) * e;  // of exp(-x^2 / 2 sigma^2) over [-r, r]
+  float filter_integral = gauss_integral - 2.0f * r * exp(-0.5f * r * r / (sigma * sigma));
+  weight = (1.0f - exp(-0.5f * (r * r - x * x) / (sigma * sigma))) * gauss_integral / filter_integral;
+  return x;
 }
 
 // Position of a sample on the film (pixels, relative to the full film's top-left) around
 // the centre of `pixel`, and its filter weight. Box: uniform over the pixel, weight 1.
-// Gaussian: uniform over the filter's square support with weight f(x) f(y) |support| /
-// (integral of f)^2, an unbiased estimate of the normalized filter convolution that keeps
-// every sample inside its own pixel's estimate (Mitsuba splats instead; same expectation).
+// Gaussian: each axis importance sampled (sample_gaussian_filter_1d); every sample stays in
+// its own pixel's estimate (Mitsuba splats samples over neighbouring pixels instead; both
+// estimate the same filtered image).
 INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) weight) {
   vec2 center = vec2(pixel) + vec2(0.5f) + vec2(float(c.crop_offset_x), float(c.crop_offset_y));
   if (c.rfilter == RFILTER_BOX) {
     weight = 1.0f;
     return center + (u - vec2(0.5f));
   }
-  float r = c.filter_radius;
-  vec2 offset = (2.0f * u - vec2(1.0f)) * r;
-  float norm = gaussian_filter_1d_integral(c.filter_stddev, r);
-  weight = gaussian_filter_1d(offset.x, c.filter_stddev, r) * gaussian_filter_1d(offset.y, c.filter_stddev, r) *
-           (4.0f * r * r) / (norm * norm);
-  return center + offset;
+  float wx;
+  float wy;
+  float x = sample_gaussian_filter_1d(u.x, c.filter_stddev, c.filter_radius, wx);
+  float y = sample_gaussian_filter_1d(u.y, c.filter_stddev, c.filter_radius, wy);
+  weight = wx * wy;
+  return center + vec2(x, y);
 }
 
 // Primary ray through film position `film` (pixels of the full film); u_lens feeds the
