@@ -21,16 +21,16 @@ INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
   float pmf;
   uint index = alias_sample(g.emitter_alias_offset, g.emitter_count, rng_next_2d(rng), pmf);
   Emitter e = scene_emitter(index);
-  EmitterSample s;
-  if (e.type == EMITTER_AREA) {
+  EmitterSample s = emitter_sample_failed();
+  if (TR_HAS_EMITTER(EMITTER_AREA) && e.type == EMITTER_AREA) {
     s = sample_area_emitter(e, ref_p, rng);
-  } else if (e.type == EMITTER_POINT) {
+  } else if (TR_HAS_EMITTER(EMITTER_POINT) && e.type == EMITTER_POINT) {
     s = sample_point_emitter(e, ref_p);
-  } else if (e.type == EMITTER_DIRECTIONAL) {
+  } else if (TR_HAS_EMITTER(EMITTER_DIRECTIONAL) && e.type == EMITTER_DIRECTIONAL) {
     s = sample_directional_emitter(e, ref_p);
-  } else if (e.type == EMITTER_CONSTANT) {
+  } else if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) {
     s = sample_constant_emitter(e, ref_p, rng_next_2d(rng));
-  } else {
+  } else if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP) {
     vec2 u_cell = rng_next_2d(rng);
     s = sample_envmap_emitter(e, ref_p, u_cell, rng_next_2d(rng));
   }
@@ -59,8 +59,9 @@ INLINE vec3 eval_environment(vec3 d) {
   SceneGlobals g = scene_globals();
   if (g.environment == NO_INDEX) return vec3(0.0f);
   Emitter e = scene_emitter(g.environment);
-  if (e.type == EMITTER_CONSTANT) return e.radiance;
-  return eval_envmap_emitter(e, d);
+  if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) return e.radiance;
+  if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP) return eval_envmap_emitter(e, d);
+  return vec3(0.0f);
 }
 
 // Density of sample_emitter producing direction d through the environment.
@@ -69,8 +70,9 @@ INLINE float pdf_environment(vec3 d) {
   if (g.environment == NO_INDEX) return 0.0f;
   Emitter e = scene_emitter(g.environment);
   float pmf = alias_pmf(g.emitter_alias_offset, g.environment);
-  if (e.type == EMITTER_CONSTANT) return pmf * pdf_constant_emitter();
-  return pmf * pdf_envmap_emitter(e, d);
+  if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) return pmf * pdf_constant_emitter();
+  if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP) return pmf * pdf_envmap_emitter(e, d);
+  return 0.0f;
 }
 
 TR_NAMESPACE_END

@@ -50,8 +50,10 @@ INLINE bool integrator_alive(PathState s) { return s.alive != 0u; }
 
 INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   Integrator it = scene_globals().integrator;
-  if (it.type == INTEGRATOR_DIRECT) return direct_step(s, hit, it);
-  return path_step(s, hit, it);
+  if (TR_HAS_INTEGRATOR(INTEGRATOR_DIRECT) && it.type == INTEGRATOR_DIRECT) return direct_step(s, hit, it);
+  if (TR_HAS_INTEGRATOR(INTEGRATOR_PATH) && it.type == INTEGRATOR_PATH) return path_step(s, hit, it);
+  s.alive = 0u;
+  return no_shadow_ray();
 }
 
 INLINE void integrator_add_unoccluded(INOUT(PathState) s, ShadowRay sr) { s.radiance += sr.contribution; }

@@ -51,7 +51,7 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
   si.emitter = shape.emitter;
   vec3 n_shading;
   vec3 dp_du = vec3(0.0f);
-  if (shape.type == SHAPE_MESH) {
+  if (TR_HAS_SHAPE(SHAPE_MESH) && shape.type == SHAPE_MESH) {
     uint base = shape.first_index + 3u * hit.primitive;
     uint i0 = shape.first_vertex + scene_index(base);
     uint i1 = shape.first_vertex + scene_index(base + 1u);
@@ -90,12 +90,12 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
     vec3 local = transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], p_inst);
     vec3 n_local;
     vec3 dp_du_local;
-    if (shape.type == SHAPE_SPHERE) {
+    if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE) {
       local = normalize(local);  // reproject onto the surface, as Mitsuba
       n_local = local;
       si.uv = unit_sphere_uv(local);
       dp_du_local = vec3(-local.y, local.x, 0.0f);
-    } else if (shape.type == SHAPE_DISK) {
+    } else if (TR_HAS_SHAPE(SHAPE_DISK) && shape.type == SHAPE_DISK) {
       local.z = 0.0f;
       n_local = vec3(0.0f, 0.0f, 1.0f);
       si.uv = unit_disk_uv(local);

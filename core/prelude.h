@@ -34,6 +34,28 @@ TR_NAMESPACE_END
 
 #endif
 
+// Feature guards: a backend that specializes its code to a scene (the GPU pipeline, through
+// specialization constants in shaders/features.glsl) defines these before including core/;
+// everywhere else every feature is compiled in.
+#ifndef TR_HAS_BSDF
+#define TR_HAS_BSDF(type) true
+#endif
+#ifndef TR_HAS_EMITTER
+#define TR_HAS_EMITTER(type) true
+#endif
+#ifndef TR_HAS_SHAPE
+#define TR_HAS_SHAPE(type) true
+#endif
+#ifndef TR_HAS_TEXTURE
+#define TR_HAS_TEXTURE(type) true
+#endif
+#ifndef TR_HAS_MATERIAL_FLAG
+#define TR_HAS_MATERIAL_FLAG(flag) true
+#endif
+#ifndef TR_HAS_INTEGRATOR
+#define TR_HAS_INTEGRATOR(type) true
+#endif
+
 TR_NAMESPACE_BEGIN
 
 const float PI = 3.14159265358979323846f;

@@ -40,7 +40,7 @@ INLINE bool sphere_cone(Shape s, vec3 p, OUT(float) one_minus_cos_max) {
 // A point on the shape, uniform in area, with its normal (flip_normals applied; mesh shading
 // normals interpolated where present, as Mitsuba's Mesh::sample_position).
 INLINE void sample_shape_area(Emitter e, Shape s, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
-  if (s.type == SHAPE_MESH) {
+  if (TR_HAS_SHAPE(SHAPE_MESH) && s.type == SHAPE_MESH) {
     float pmf;
     uint tri = alias_sample(e.alias_offset, e.alias_count, rng_next_2d(rng), pmf);
     vec2 b = square_to_uniform_triangle(rng_next_2d(rng));
@@ -83,7 +83,7 @@ INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) 
   EmitterSample s = emitter_sample_failed();
   Shape shape = scene_shape(e.shape);
   float one_minus_cos_max;
-  if (shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max)) {
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max)) {
     // pbrt-v4 §6.2.4: sample cos(theta) in the cone, then the sphere point whose direction
     // from the centre makes angle alpha with the axis (law of cosines).
     vec2 u = rng_next_2d(rng);
@@ -140,7 +140,7 @@ INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) 
 INLINE float pdf_area_emitter(Emitter e, vec3 ref_p, vec3 p, vec3 n) {
   Shape shape = scene_shape(e.shape);
   float one_minus_cos_max;
-  if (shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max))
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max))
     return 1.0f / (2.0f * PI * one_minus_cos_max);
   vec3 v = p - ref_p;
   float dist2 = dot(v, v);
