@@ -52,9 +52,10 @@ struct Config {
   float alpha_v;
 };
 
-const Config kConfigs[] = {{false, 0.1f, 0.1f}, {false, 0.5f, 0.5f}, {false, 1.0f, 1.0f},
-                           {false, 0.2f, 0.6f}, {true, 0.1f, 0.1f},  {true, 0.5f, 0.5f},
-                           {true, 1.0f, 1.0f},  {true, 0.6f, 0.2f}};
+const Config kConfigs[] = {{false, 0.02f, 0.02f}, {false, 0.1f, 0.1f}, {false, 0.5f, 0.5f},
+                           {false, 1.0f, 1.0f},   {false, 0.2f, 0.6f}, {true, 0.02f, 0.02f},
+                           {true, 0.1f, 0.1f},    {true, 0.5f, 0.5f},  {true, 1.0f, 1.0f},
+                           {true, 0.6f, 0.2f}};
 
 TEST(Microfacet, ProjectedAreaIsOne) {
   // \int D(m) cos(theta_m) dm = 1 (Walter et al. 2007, eq. 4).
