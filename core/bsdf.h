@@ -38,23 +38,24 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
       return conductor_flags(m, uv);
     case BSDF_ROUGHCONDUCTOR:
       return roughconductor_flags(m, uv);
+    case BSDF_DIELECTRIC:
+      return dielectric_flags(m, uv);
     case BSDF_ROUGHDIELECTRIC:
       return roughdielectric_flags(m, uv);
+    case BSDF_THINDIELECTRIC:
+      return thindielectric_flags(m, uv);
     case BSDF_PLASTIC:
       return plastic_flags(m, uv);
     case BSDF_ROUGHPLASTIC:
       return roughplastic_flags(m, uv);
     case BSDF_PRINCIPLED:
       return principled_flags(m, uv);
-    case BSDF_DIELECTRIC:
-      return dielectric_flags(m, uv);
-    case BSDF_THINDIELECTRIC:
-      return thindielectric_flags(m, uv);
     default:
       return 0u;
   }
 }
 
+// Delta lobes have neither a density nor a value: only BSDFs with smooth lobes appear here.
 INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
@@ -101,18 +102,18 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       return conductor_sample(m, uv, wi, u1, u2);
     case BSDF_ROUGHCONDUCTOR:
       return roughconductor_sample(m, uv, wi, u1, u2);
+    case BSDF_DIELECTRIC:
+      return dielectric_sample(m, uv, wi, u1, u2);
     case BSDF_ROUGHDIELECTRIC:
       return roughdielectric_sample(m, uv, wi, u1, u2);
+    case BSDF_THINDIELECTRIC:
+      return thindielectric_sample(m, uv, wi, u1, u2);
     case BSDF_PLASTIC:
       return plastic_sample(m, uv, wi, u1, u2);
     case BSDF_ROUGHPLASTIC:
       return roughplastic_sample(m, uv, wi, u1, u2);
     case BSDF_PRINCIPLED:
       return principled_sample(m, uv, wi, u1, u2);
-    case BSDF_DIELECTRIC:
-      return dielectric_sample(m, uv, wi, u1, u2);
-    case BSDF_THINDIELECTRIC:
-      return thindielectric_sample(m, uv, wi, u1, u2);
     default:
       return bsdf_sample_failed();
   }
