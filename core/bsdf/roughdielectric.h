@@ -120,31 +120,13 @@ INLINE BsdfSample roughdielectric_sample(Material m, vec2 uv, vec3 wi, float u1,
   vec3 wo = reflect ? reflect_about(wi, h) : refract_about(wi, h, cos_t, eta_ti);
   // A direction on the wrong side for its lobe is masked (G1(wo, h) = 0).
   if (reflect ? !(wo.z * cos_i > 0.0f) : !(wo.z * cos_i < 0.0f)) return bsdf_sample_failed();
-  float pdf = roughdielectric_pdf_half(d, wi, wo, h, eta_it, m.eta, reflect);
-  // weight = f cos_o / pdf: the Fresnel factor cancels with the lobe probability, leaving
-  // G1(wo, h) G1(wi, h) / G1*(wi, h) for visible normals (G1* the exact masking of the
-  // sampled density; Mitsuba's G1(wo, h) assumes both equal, which for Beckmann holds to
-  // 0.35%) and G (wi.h) D(h) / (cos_i cos_h D'(h)) otherwise (Walter et al. eq. 41; D' the
-  // widened sampling distribution — Mitsuba 3 omits D / D' here, which makes its weights
-  // disagree with its pdf), times the tint and, for refraction, the radiance scaling eta_ti^2.
-  float g;
-  if (d.sample_visible) {
-    float g1_sampled = microfacet_smith_g1_exact(d, wi, h);
-    if (!(g1_sampled > 0.0f)) return bsdf_sample_failed();
-    g = microfacet_smith_g1(d, wo, h) * (microfacet_smith_g1(d, wi, h) / g1_sampled);
-  } else {
-    float d_sampled = microfacet_d(ds, h);
-    if (!(d_sampled > 0.0f)) return bsdf_sample_failed();
-    g = microfacet_g(d, wi, wo, h) * wi_h / (cos_i * h.z) * (microfacet_d(d, h) / d_sampled);
-  }
-  vec3 weight =
-      reflect ? eval_textured(m.param[DIELECTRIC_SPECULAR_REFLECTANCE], uv)
-              : eval_textured(m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE], uv) * (eta_ti * eta_ti);
-  weight *= g;
-  if (!(pdf > 0.0f && pdf < FLOAT_MAX) || any(isnan(weight)) || any(isinf(weight)))
-    return bsdf_sample_failed();
-  return bsdf_sample_make(wo, pdf, weight, reflect ? 1.0f : eta_it,
-                          reflect ? BSDF_GLOSSY_REFLECTION : BSDF_GLOSSY_TRANSMISSION);
+  // Density and value at wo as pdf() and eval() see it, so that both agree exactly with the
+  // sample (Mitsuba writes the weight in closed form — G1(wo, h) for visible normals — which
+  // is the same up to rounding, and up to D / D' of the widened sampling distribution that
+  // it leaves out).
+  return bsdf_sample_smooth(wo, roughdielectric_pdf(m, uv, wi, wo),
+                            roughdielectric_eval(m, uv, wi, wo), reflect ? 1.0f : eta_it,
+                            reflect ? BSDF_GLOSSY_REFLECTION : BSDF_GLOSSY_TRANSMISSION);
 }
 
 TR_NAMESPACE_END
