@@ -439,6 +439,48 @@ TEST(BsdfExtremes, NoNanInfOrNegative) {
   }
 }
 
+// At grazing incidence the lobe is pressed against the horizon and part of the sampled
+// directions leave the hemisphere: the mass of pdf() must equal the fraction of samples that
+// succeed. pdf() is integrated over the sphere in polar coordinates around the mirror
+// direction, where the lobe sits, with nodes packed toward it (GGX's tails reach far).
+TEST(BsdfGrazing, PdfMassEqualsSampleSuccessRate) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  for (uint flags : {0u, 4u, 8u, 12u}) {
+    for (float degrees : {85.0f, 89.9f}) {
+      Material m = rough_conductor(flags, 0.05f, 0.05f, vec3(0.0f), vec3(1.0f));
+      float theta = degrees * float(M_PI) / 180.0f;
+      vec3 wi = direction(std::cos(theta), 0.349f);
+      vec3 r(-wi.x, -wi.y, wi.z);
+      vec3 t1 = normalize(cross(r, vec3(0.0f, 0.0f, 1.0f)));
+      vec3 t2 = cross(r, t1);
+      const int n_angle = 3000, n_phi = 360;
+      double mass = 0.0;
+      for (int i = 0; i < n_angle; ++i) {
+        double s = (i + 0.5) / n_angle;
+        double angle = M_PI * s * s * s;
+        double d_angle = 3.0 * M_PI * s * s / n_angle;
+        for (int j = 0; j < n_phi; ++j) {
+          double phi = 2.0 * M_PI * (j + 0.5) / n_phi;
+          vec3 wo = float(std::cos(angle)) * r + float(std::sin(angle) * std::cos(phi)) * t1 +
+                    float(std::sin(angle) * std::sin(phi)) * t2;
+          mass += bsdf_pdf(m, vec2(0.5f), wi, normalize(wo)) * std::sin(angle) * d_angle *
+                  (2.0 * M_PI / n_phi);
+        }
+      }
+      const int n = 100000;
+      int succeeded = 0;
+      for (int i = 0; i < n; ++i) {
+        if (bsdf_sample(m, vec2(0.5f), wi, uni(rng), vec2(uni(rng), uni(rng))).pdf > 0.0f)
+          ++succeeded;
+      }
+      double rate = double(succeeded) / n;
+      double sigma = std::sqrt(std::max(rate * (1.0 - rate), 1e-4) / n);
+      EXPECT_NEAR(mass, rate, 5.0 * sigma + 1e-3) << "flags " << flags << " at " << degrees;
+    }
+  }
+}
+
 // ---- Known values ------------------------------------------------------------------------
 
 TEST(BsdfValues, DiffuseIsLambertian) {
