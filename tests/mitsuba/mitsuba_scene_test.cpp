@@ -1,0 +1,35 @@
+// One Mitsuba test scene of a suite file, rendered on the CPU with the suite's spp and seed
+// and judged by the acceptance rule of shared/mitsuba-tests/README.md (its per-pixel and
+// per-block tests at family-wise alpha 0.01 each). The gain test is printed for information.
+// usage: mitsuba_scene_test SUITE NAME   (exit 0 pass, 1 fail, 2 bad input)
+#include <cstdio>
+#include <exception>
+
+#include "validation/harness/mitsuba_acceptance.h"
+#include "validation/harness/scene_render.h"
+#include "validation/harness/suite.h"
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: mitsuba_scene_test SUITE NAME\n");
+    return 2;
+  }
+  try {
+    std::vector<tr::SuiteEntry> suite = tr::read_suite(argv[1]);
+    const tr::SuiteEntry& e = tr::find_entry(suite, argv[2]);
+    tr::Scene scene = tr::load_entry_scene(e);
+    std::uint32_t spp = tr::entry_spp(e, scene);
+    tr::SceneRender r = tr::render_scene("cpu", scene, spp, e.seed);
+    tr::RgbImage ref = tr::read_rgb(e.reference), var = tr::read_rgb(e.variance);
+    tr::AcceptanceResult a = tr::mitsuba_acceptance(r.mean, spp, ref, var, e.reference_spp);
+    std::printf("%s: %s, cpu, %ux%u, %u spp, seed %u, %.2f s\n", e.name.c_str(), e.scene.c_str(),
+                r.result.width, r.result.height, spp, e.seed, r.result.stats.seconds);
+    std::printf("  %s\n  %s\n  %s (information only)\n", tr::describe_test(a.pixel_z).c_str(),
+                tr::describe_test(a.block_z).c_str(), tr::describe_test(a.gain_z).c_str());
+    std::printf("%s: %s\n", e.name.c_str(), a.passed ? "PASS" : "FAIL");
+    return a.passed ? 0 : 1;
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "mitsuba_scene_test: %s\n", ex.what());
+    return 2;
+  }
+}

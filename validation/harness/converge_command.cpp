@@ -1,0 +1,257 @@
+#include "validation/harness/converge_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/arguments.h"
+#include "app/exit_codes.h"
+#include "io/temp_file.h"
+#include "scenes/load_scene.h"
+#include "validation/harness/scene_render.h"
+#include "validation/harness/variant.h"
+#include "validation/image/convergence.h"
+#include "validation/image/metrics.h"
+
+namespace tr {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kUsage =
+    R"(usage: twinray converge SCENE.xml --reference REF.exr --budget SECONDS [options]
+
+For each variant, renders SCENE at start-spp, 2 start-spp, 4 start-spp, ... (a fresh render
+each, seeds seed, seed+1, ...) until the variant's time budget is spent or the next render
+would overrun it (its time predicted as twice the last), and records the render time, RMSE
+and relMSE against REF (validation/image/metrics.h). Writes OUT/convergence.csv,
+OUT/convergence.svg (log-log RMSE and relMSE against seconds) and OUT/time_to_error.csv, and
+prints the time to reach each relMSE target and the fitted convergence rate.
+
+Options:
+  --variant SPEC     a render variant, comma-separated KEY=VALUE (may repeat; default: the
+                     scene as written, on the CPU):
+                       integrator=path|direct  max_depth=N (-1 unbounded)  rr_depth=N|off
+                       backend=cpu|gpu         label=TEXT
+                     e.g. --variant max_depth=3 --variant rr_depth=off,label=no-RR
+  --budget SECONDS   time budget of each variant (required)
+  --start-spp N      first rung of the spp ladder (default 1)
+  --max-spp N        last rung at most (default 1048576)
+  --seed S           seed of the first rung (default 0)
+  --targets LIST     comma-separated relMSE levels for time-to-error (default 1e-2,1e-3,1e-4)
+  --out DIR          output folder (default: converge-<scene name>)
+  --threads N        CPU worker threads (default: all cores)
+  -D NAME=VALUE      override a <default> of the scene     -a PATH  add a search path
+
+Exit status: 0 ok, 2 usage error, 3 invalid scene, 4 backend unavailable, 5 an output could
+not be written, 6 internal error.
+)";
+
+struct ConvergeArgs {
+  std::string scene, reference, out;
+  std::vector<RenderVariant> variants;
+  double budget = 0.0;
+  std::uint32_t start_spp = 1, max_spp = 1u << 20, seed = 0, threads = 0;
+  std::vector<double> targets = {1e-2, 1e-3, 1e-4};
+  LoadOptions load;
+  bool help = false;
+};
+
+double parse_positive(const std::string& name, const std::string& v) {
+  size_t used = 0;
+  double x = 0.0;
+  try {
+    x = std::stod(v, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (v.empty() || used != v.size() || !(x > 0.0) || !std::isfinite(x))
+    throw UsageError(name + " expects a positive number, got '" + v + "'");
+  return x;
+}
+
+ConvergeArgs parse(int argc, char** argv) {
+  ConvergeArgs a;
+  Arguments args(argc - 1, argv + 1);
+  while (args.more()) {
+    std::string arg = args.next();
+    if (arg == "--help" || arg == "-h") {
+      a.help = true;
+    } else if (arg == "--reference") {
+      a.reference = args.value(arg);
+    } else if (arg == "--budget") {
+      a.budget = parse_positive(arg, args.value(arg));
+    } else if (arg == "--variant") {
+      try {
+        a.variants.push_back(parse_variant(args.value(arg)));
+      } catch (const VariantError& e) {
+        throw UsageError(std::string("--variant: ") + e.what());
+      }
+    } else if (arg == "--start-spp") {
+      a.start_spp = args.uint_value(arg, 1);
+    } else if (arg == "--max-spp") {
+      a.max_spp = args.uint_value(arg, 1);
+    } else if (arg == "--seed") {
+      a.seed = args.uint_value(arg, 0);
+    } else if (arg == "--targets") {
+      a.targets.clear();
+      std::istringstream list(args.value(arg));
+      std::string t;
+      while (std::getline(list, t, ',')) a.targets.push_back(parse_positive("--targets", t));
+      if (a.targets.empty()) throw UsageError("--targets lists no level");
+    } else if (arg == "--out") {
+      a.out = args.value(arg);
+    } else if (arg == "--threads") {
+      a.threads = args.uint_value(arg, 1);
+    } else if (arg == "-D") {
+      std::string kv = args.value(arg);
+      size_t eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw UsageError("-D expects NAME=VALUE, got '" + kv + "'");
+      a.load.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
+    } else if (arg == "-a") {
+      a.load.search_paths.push_back(args.value(arg));
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option '" + arg + "'");
+    } else if (a.scene.empty()) {
+      a.scene = arg;
+    } else {
+      throw UsageError("more than one scene given ('" + a.scene + "', '" + arg + "')");
+    }
+  }
+  if (a.help) return a;
+  if (a.scene.empty()) throw UsageError("no scene file given");
+  if (a.reference.empty()) throw UsageError("--reference is required");
+  if (a.budget <= 0.0) throw UsageError("--budget is required");
+  if (a.start_spp > a.max_spp) throw UsageError("--start-spp exceeds --max-spp");
+  if (a.variants.empty()) a.variants.push_back(parse_variant(""));
+  if (a.out.empty()) a.out = "converge-" + fs::path(a.scene).stem().string();
+  return a;
+}
+
+ConvergenceSeries converge_variant(const Scene& base, const RenderVariant& v,
+                                   const RgbImage& reference, const ConvergeArgs& a) {
+  Scene scene = apply_variant(base, v);
+  ConvergenceSeries series;
+  series.name = v.label + " (" + v.backend + ")";
+  double spent = 0.0, last = 0.0;
+  std::uint32_t seed = a.seed;
+  for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2, ++seed) {
+    if (!series.points.empty() && spent + 2.0 * last > a.budget) break;
+    SceneRender r = render_scene(v.backend, scene, std::uint32_t(spp), seed, a.threads);
+    check_same_size(r.mean, "render", reference, a.reference);
+    ErrorMetrics m = error_metrics(r.mean, reference);
+    ConvergencePoint p;
+    p.seconds = r.result.stats.seconds;
+    p.spp = double(spp);
+    p.rmse = m.rmse;
+    p.relmse = m.relmse;
+    series.points.push_back(p);
+    std::printf("  %-28s %8llu spp  %9.3f s  RMSE %.5g  relMSE %.5g\n", series.name.c_str(),
+                static_cast<unsigned long long>(spp), p.seconds, p.rmse, p.relmse);
+    std::fflush(stdout);
+    last = p.seconds;
+    spent += p.seconds;
+  }
+  return series;
+}
+
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+// Columns: series,metric,target,seconds (seconds empty when the series never got there).
+std::string time_to_error_csv(const std::vector<ConvergenceSeries>& all,
+                              const std::vector<double>& targets) {
+  std::string csv = "series,metric,target,seconds\n";
+  char buf[128];
+  for (const ConvergenceSeries& s : all)
+    for (double t : targets) {
+      std::optional<double> sec = time_to_error(s, ConvergenceMetric::relmse, t);
+      std::snprintf(buf, sizeof buf, ",relmse,%.6g,", t);
+      csv += csv_quote(s.name) + buf;
+      if (sec) {
+        std::snprintf(buf, sizeof buf, "%.6g", *sec);
+        csv += buf;
+      }
+      csv += "\n";
+    }
+  return csv;
+}
+
+void print_summary(const std::vector<ConvergenceSeries>& all, const std::vector<double>& targets) {
+  for (const ConvergenceSeries& s : all) {
+    std::printf("%s:", s.name.c_str());
+    for (double t : targets) {
+      std::optional<double> sec = time_to_error(s, ConvergenceMetric::relmse, t);
+      if (sec)
+        std::printf("  relMSE %.0e in %.3g s", t, *sec);
+      else
+        std::printf("  relMSE %.0e not reached", t);
+    }
+    std::optional<double> rate = convergence_rate(s, ConvergenceMetric::relmse);
+    if (rate) std::printf("  (relMSE ~ seconds^%.2f)", *rate);
+    std::printf("\n");
+  }
+}
+
+}  // namespace
+
+int converge_command(int argc, char** argv) {
+  ConvergeArgs a;
+  try {
+    a = parse(argc, argv);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "twinray converge: %s\n(see twinray converge --help)\n", e.what());
+    return kExitUsage;
+  }
+  if (a.help) {
+    std::fputs(kUsage, stdout);
+    return kExitOk;
+  }
+  RgbImage reference;
+  try {
+    reference = read_rgb(a.reference);
+  } catch (const ImageError& e) {
+    std::fprintf(stderr, "twinray converge: %s\n", e.what());
+    return kExitUsage;
+  }
+  try {
+    fs::path dir(a.out);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw FileError(a.out + ": cannot create the output folder: " + ec.message());
+    Scene scene = load_scene(a.scene, a.load);
+    std::vector<ConvergenceSeries> all;
+    for (const RenderVariant& v : a.variants)
+      all.push_back(converge_variant(scene, v, reference, a));
+    std::string csv = (dir / "convergence.csv").string(), svg = (dir / "convergence.svg").string(),
+                tte = (dir / "time_to_error.csv").string();
+    write_text_file(csv, convergence_csv(all));
+    write_text_file(svg, convergence_svg(all, "twinray converge " + a.scene));
+    write_text_file(tte, time_to_error_csv(all, a.targets));
+    print_summary(all, a.targets);
+    std::printf("converge: wrote %s, %s, %s\n", csv.c_str(), svg.c_str(), tte.c_str());
+    return kExitOk;
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "twinray converge: %s\n", e.what());
+    return kExitBadScene;
+  } catch (const BackendUnavailable& e) {
+    std::fprintf(stderr, "twinray converge: %s\n", e.what());
+    return kExitNoBackend;
+  } catch (const FileError& e) {
+    std::fprintf(stderr, "twinray converge: %s\n", e.what());
+    return kExitOutput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "twinray converge: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}
+
+}  // namespace tr

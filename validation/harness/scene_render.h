@@ -1,0 +1,35 @@
+// Rendering a suite entry with a backend, and the render as images the comparisons take.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "render/render.h"
+#include "scenes/scene.h"
+#include "validation/harness/suite.h"
+#include "validation/image/rgb_image.h"
+
+namespace tr {
+
+struct SceneRender {
+  RenderResult result;
+  RgbImage mean, variance;  // variance: per sample (Mitsuba `moment` semantics)
+};
+
+// load_scene with the entry's defines; throws SceneError.
+Scene load_entry_scene(const SuiteEntry& entry);
+
+// The entry's spp, or acceptance_spp of the scene's film when the entry says auto.
+std::uint32_t entry_spp(const SuiteEntry& entry, const Scene& scene);
+
+// run_backend with spp, seed and threads (0: all cores); throws BackendUnavailable.
+SceneRender render_scene(const std::string& backend, const Scene& scene, std::uint32_t spp,
+                         std::uint32_t seed, std::uint32_t threads = 0);
+
+RgbImage mean_image(const RenderResult& r);
+RgbImage variance_image(const RenderResult& r);
+
+// 8-bit sRGB preview (io/image.h write_png_srgb); throws ImageError.
+void write_preview_png(const std::string& path, const RgbImage& img);
+
+}  // namespace tr

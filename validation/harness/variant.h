@@ -1,0 +1,37 @@
+// Render variants of `twinray converge`: integrator settings patched into a loaded scene
+// (SceneGlobals::integrator, read by both backends) and the backend to render with.
+//
+// A variant is written as comma-separated KEY=VALUE fields:
+//   integrator=path|direct   Mitsuba's `path` or `direct` (emitter and BSDF samples 1 each)
+//   max_depth=N              -1 for unbounded (Mitsuba semantics: 2 = direct lighting only)
+//   rr_depth=N|off           depth at which Russian roulette starts; off never starts it
+//   backend=cpu|gpu
+//   label=TEXT               the series name (default: the fields as given, or "scene")
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "scenes/scene.h"
+
+namespace tr {
+
+struct VariantError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+struct RenderVariant {
+  std::string label;
+  std::string backend = "cpu";
+  std::optional<uint> integrator;  // INTEGRATOR_*
+  std::optional<int> max_depth, rr_depth;
+};
+
+// Throws VariantError naming the bad field.
+RenderVariant parse_variant(const std::string& spec);
+
+// The scene with the variant's integrator settings.
+Scene apply_variant(const Scene& scene, const RenderVariant& variant);
+
+}  // namespace tr
