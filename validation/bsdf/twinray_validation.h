@@ -103,8 +103,7 @@ struct ChiSquareOptions {
   /// Absolute tolerance of the adaptive Gauss-Kronrod integral of the density over one bin,
   /// as a probability (one draw in `sample_count` ≙ 1/sample_count).
   double integration_tolerance = 1e-8;
-  int integration_min_depth = 0;  ///< Forced bisections per bin and axis before adapting.
-  int integration_max_depth = 12;
+  int integration_max_panels = 32;  ///< Panel budget per one-dimensional adaptive integral.
   std::uint64_t seed = 1;
 };
 
@@ -114,8 +113,8 @@ struct ChiSquareResult {
   int dof = 0;             ///< Degrees of freedom: pooled cells - 1.
   double p_value = 0.0;    ///< P(X² ≥ statistic) under the null hypothesis; 0 on a hard failure.
   double pdf_integral = 0.0;        ///< ∫ pdf over the domain + probabilities of sampled deltas.
-  double integration_error = 0.0;   ///< Bound on the quadrature error of pdf_integral (sum of
-                                    ///< the per-bin Gauss-Kronrod error estimates).
+  double integration_error = 0.0;   ///< Estimated quadrature error of pdf_integral (sum of
+                                    ///< the per-bin QUADPACK Gauss-Kronrod error estimates).
   std::size_t samples = 0;          ///< Draws made.
   std::size_t failed_samples = 0;   ///< Draws with pdf 0.
   std::size_t delta_samples = 0;    ///< Draws from delta lobes (tested as discrete atoms).

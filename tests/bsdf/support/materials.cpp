@@ -1,7 +1,12 @@
 #include "materials.h"
 
+#include <cmath>
+#include <map>
+#include <tuple>
+
 #include "core/bsdf.h"
 #include "core/material_slots.h"
+#include "scene_access_local.h"
 
 namespace tr::bsdf_suite {
 namespace {
@@ -87,6 +92,11 @@ Material plastic(float eta, vec3 diffuse_reflectance, vec3 specular_reflectance,
   m.flags = nonlinear ? MATERIAL_NONLINEAR : 0u;
   m.param[PLASTIC_DIFFUSE_REFLECTANCE] = constant(diffuse_reflectance);
   m.param[PLASTIC_SPECULAR_REFLECTANCE] = constant(specular_reflectance);
+  // Mitsuba's specular sampling weight s_mean / (d_mean + s_mean) over channel means, in
+  // Material.extra (core/bsdf/plastic.h).
+  float d_mean = (diffuse_reflectance.x + diffuse_reflectance.y + diffuse_reflectance.z) / 3.0f;
+  float s_mean = (specular_reflectance.x + specular_reflectance.y + specular_reflectance.z) / 3.0f;
+  m.extra = d_mean + s_mean > 0.0f ? s_mean / (d_mean + s_mean) : 0.0f;
   return m;
 }
 
@@ -96,16 +106,55 @@ Material roughplastic(Distribution d, float alpha, bool sample_visible, float et
   m.type = BSDF_ROUGHPLASTIC;
   m.flags |= microfacet_flags(d, sample_visible);
   m.param[PLASTIC_ALPHA] = constant(vec3(alpha));
+  // The precomputed terms of core/bsdf/roughplastic.h, built with core/bsdf/roughplastic_table.h
+  // as the loader does: T(mu_j) as a one-row texture, R_int in value.x. One per (distribution,
+  // alpha, eta).
+  static std::map<std::tuple<bool, float, float>, TexturedValue> tables;
+  bool beckmann = d == Distribution::beckmann;
+  auto key = std::make_tuple(beckmann, alpha, eta);
+  auto it = tables.find(key);
+  if (it == tables.end()) {
+    Texture t{};
+    t.type = TEXTURE_BITMAP;
+    t.filter_mode = FILTER_BILINEAR;
+    t.wrap_mode = WRAP_CLAMP;
+    t.width = ROUGHPLASTIC_TABLE_RES;
+    t.height = 1u;
+    t.to_uv[0] = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    t.to_uv[1] = vec4(0.0f, 1.0f, 0.0f, 0.0f);
+    std::vector<vec4> texels;
+    for (uint j = 0; j < ROUGHPLASTIC_TABLE_RES; ++j) {
+      float T = roughplastic_external_transmittance(beckmann, alpha, eta, roughplastic_table_mu(j));
+      texels.push_back(vec4(T, T, T, 1.0f));
+    }
+    TexturedValue v;
+    v.value = vec3(roughplastic_internal_reflectance(beckmann, alpha, eta));
+    v.texture = add_texture(t, texels);
+    it = tables.emplace(key, v).first;
+  }
+  m.param[ROUGHPLASTIC_TABLE] = it->second;
   return m;
 }
 
 Material principled(const PrincipledParameters& p) {
   Material m = blank(BSDF_PRINCIPLED);
-  m.eta = p.eta;
+  // The loader's eta <-> specular correspondence (Mitsuba principled.cpp):
+  // eta = 2 / (1 - sqrt(0.08 specular)) - 1; with transmission, eta = 1 becomes 1.001 and
+  // specular = 0 becomes 1e-3.
+  float specular = p.specular;
+  float eta = p.eta;
+  if (eta > 0.0f) {
+    if (p.spec_trans > 0.0f && eta == 1.0f) eta = 1.001f;
+    specular = sqr((eta - 1.0f) / (eta + 1.0f)) / 0.08f;
+  } else {
+    if (p.spec_trans > 0.0f && specular == 0.0f) specular = 1e-3f;
+    eta = 2.0f / (1.0f - std::sqrt(0.08f * specular)) - 1.0f;
+  }
+  m.eta = eta;
   m.param[PRINCIPLED_BASE_COLOR] = constant(p.base_color);
   m.param[PRINCIPLED_ROUGHNESS] = constant(vec3(p.roughness));
   m.param[PRINCIPLED_METALLIC] = constant(vec3(p.metallic));
-  m.param[PRINCIPLED_SPECULAR] = constant(vec3(p.specular));
+  m.param[PRINCIPLED_SPECULAR] = constant(vec3(specular));
   m.param[PRINCIPLED_SPEC_TINT] = constant(vec3(p.spec_tint));
   m.param[PRINCIPLED_ANISOTROPIC] = constant(vec3(p.anisotropic));
   m.param[PRINCIPLED_SHEEN] = constant(vec3(p.sheen));
@@ -129,6 +178,8 @@ Material masked(Material m, float opacity) {
 }
 
 bool bsdf_available(const Material& m) { return (bsdf_flags(m, kUv) & ~BSDF_NULL) != 0u; }
+
+bool bsdf_type_available(uint type) { return bsdf_available(blank(type)); }
 
 twinray::validation::BsdfUnderTest core_bsdf(const std::string& name, const Material& m) {
   twinray::validation::BsdfUnderTest b;

@@ -25,7 +25,7 @@ Material roughplastic(Distribution d, float alpha, bool sample_visible, float et
                       vec3 diffuse_reflectance, vec3 specular_reflectance, bool nonlinear);
 
 // Every `principled` parameter (Mitsuba names); the sampling rates are Mitsuba's defaults
-// unless set.
+// unless set. `eta` and `specular` are tied as the loader ties them.
 struct PrincipledParameters {
   vec3 base_color = vec3(0.5f);
   float roughness = 0.5f;
@@ -38,7 +38,7 @@ struct PrincipledParameters {
   float clearcoat = 0.0f;
   float clearcoat_gloss = 0.0f;
   float spec_trans = 0.0f;
-  float eta = 1.5f;
+  float eta = 0.0f;  // > 0: sets `eta` (and specular from it); 0: eta from `specular`
   vec3 sampling_rates = vec3(1.0f);  // diffuse, main specular, clearcoat
 };
 Material principled(const PrincipledParameters& p);
@@ -48,6 +48,7 @@ Material masked(Material m, float opacity);
 
 // Whether core/bsdf.h dispatches this material's type (its flags are non-zero).
 bool bsdf_available(const Material& m);
+bool bsdf_type_available(uint type);
 
 // sample/pdf/eval of bsdf_sample/bsdf_pdf/bsdf_eval at uv = (0.5, 0.5); delta = a
 // BSDF_DELTA lobe (delta reflection/transmission or the mask's null lobe).

@@ -1,6 +1,8 @@
 // core/scene_access.h for the BSDF validation suite: materials, textures and texels come from
-// small local vectors (the suite uses constant parameters, so they stay empty); everything else
-// is out of scope here and throws.
+// small local vectors (constant parameters everywhere; textures only for roughplastic's
+// precomputed table); everything else is out of scope here and throws.
+#include "scene_access_local.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +21,17 @@ std::vector<vec4> texels;
 }
 
 }  // namespace
+
+namespace bsdf_suite {
+
+uint add_texture(Texture t, const std::vector<vec4>& new_texels) {
+  t.texel_offset = uint(texels.size());
+  texels.insert(texels.end(), new_texels.begin(), new_texels.end());
+  textures.push_back(t);
+  return uint(textures.size() - 1);
+}
+
+}  // namespace bsdf_suite
 
 SceneGlobals scene_globals() { out_of_scope("scene_globals"); }
 Material scene_material(uint index) { return materials.at(index); }

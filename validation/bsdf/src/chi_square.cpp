@@ -24,6 +24,30 @@ struct Cell {
   double expected = 0.0;
 };
 
+// Where the draws of each cell fell, to seed the quadrature's panels.
+struct Draws {
+  std::vector<std::vector<float>> x, y;
+  explicit Draws(std::size_t cells) : x(cells), y(cells) {}
+  void add(int cell, double xv, double yv) {
+    x[cell].push_back(float(xv));
+    y[cell].push_back(float(yv));
+  }
+};
+
+// The cell's edges and the 1%, 10%, 50%, 90% and 99% quantiles of its draws.
+std::vector<double> breakpoints(double lower, double upper, std::vector<float>& draws) {
+  std::vector<double> breaks = {lower, upper};
+  if (!draws.empty()) {
+    std::sort(draws.begin(), draws.end());
+    for (double q : {0.01, 0.1, 0.5, 0.9, 0.99}) {
+      double v = draws[std::size_t(q * double(draws.size() - 1))];
+      if (v > lower && v < upper) breaks.push_back(v);
+    }
+  }
+  std::sort(breaks.begin(), breaks.end());
+  return breaks;
+}
+
 // A rectangular grid over (x, y) whose density has Jacobian 1 with respect to the measure the
 // pdf is stated in: (cos θ, φ) for solid angle (dω = d(cos θ) dφ), (x, y) for area.
 struct Grid {
@@ -39,8 +63,7 @@ struct Grid {
 
 void check_options(const ChiSquareOptions& o) {
   if (o.sample_count == 0 || o.cos_theta_bins < 1 || o.phi_bins < 1 || o.min_expected <= 0.0 ||
-      o.integration_tolerance <= 0.0 || o.integration_min_depth < 0 ||
-      o.integration_max_depth < o.integration_min_depth) {
+      o.integration_tolerance <= 0.0 || o.integration_max_panels < 1) {
     throw std::invalid_argument("ChiSquareOptions out of range");
   }
 }
@@ -50,11 +73,11 @@ glm::dvec3 spherical_direction(double cos_theta, double phi) {
   return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
 
-// Cell of a direction in the (cos θ, φ ∈ [0, 2π)) grid.
-int spherical_cell(const Grid& g, const glm::vec3& w) {
+// (cos θ, φ ∈ [0, 2π)) of a direction.
+glm::dvec2 spherical_coordinates(const glm::vec3& w) {
   double phi = std::atan2(double(w.y), double(w.x));
   if (phi < 0.0) phi += kTwoPi;
-  return g.cell(std::clamp(double(w.z), -1.0, 1.0), phi);
+  return {std::clamp(double(w.z), -1.0, 1.0), phi};
 }
 
 Grid spherical_grid(const ChiSquareOptions& o) {
@@ -63,23 +86,23 @@ Grid spherical_grid(const ChiSquareOptions& o) {
 
 // Expected counts of every cell: sample_count · ∫_cell density.
 void integrate_expected(const std::function<double(double, double)>& density, const Grid& g,
-                        const ChiSquareOptions& o, std::vector<Cell>& cells,
+                        const ChiSquareOptions& o, Draws& draws, std::vector<Cell>& cells,
                         ChiSquareResult& result) {
-  detail::QuadratureSettings settings{o.integration_tolerance, o.integration_min_depth,
-                                      o.integration_max_depth};
+  detail::QuadratureSettings settings{o.integration_tolerance, o.integration_max_panels};
   double dx = (g.x1 - g.x0) / g.nx, dy = (g.y1 - g.y0) / g.ny;
   for (int i = 0; i < g.nx; ++i) {
     for (int j = 0; j < g.ny; ++j) {
-      detail::Quadrature q =
-          detail::adaptive_gauss_kronrod_2d(density, g.x0 + i * dx, g.x0 + (i + 1) * dx,
-                                            g.y0 + j * dy, g.y0 + (j + 1) * dy, settings);
+      int c = i * g.ny + j;
+      detail::Quadrature q = detail::adaptive_gauss_kronrod_2d(
+          density, breakpoints(g.x0 + i * dx, g.x0 + (i + 1) * dx, draws.x[c]),
+          breakpoints(g.y0 + j * dy, g.y0 + (j + 1) * dy, draws.y[c]), settings);
       if (!std::isfinite(q.value) || q.value < 0.0) {
         std::ostringstream m;
         m << "density integrates to " << q.value << " over cell (" << i << ", " << j << ")";
         result.failure = m.str();
         return;
       }
-      cells[i * g.ny + j].expected = q.value * double(o.sample_count);
+      cells[c].expected = q.value * double(o.sample_count);
       result.pdf_integral += q.value;
       result.integration_error += q.error;
     }
@@ -155,6 +178,7 @@ ChiSquareResult chi_square_bsdf(const BsdfUnderTest& bsdf, const glm::vec3& wi,
   ChiSquareResult result;
   Grid grid = spherical_grid(o);
   std::vector<Cell> cells(std::size_t(grid.nx) * grid.ny);
+  Draws draws(cells.size());
   struct Atom {
     double probability;
     double observed;
@@ -177,13 +201,16 @@ ChiSquareResult chi_square_bsdf(const BsdfUnderTest& bsdf, const glm::vec3& wi,
       continue;
     }
     if (!(bsdf.pdf(wi, s.wo) > 0.0f)) ++result.outside_support;
-    cells[spherical_cell(grid, s.wo)].observed += 1.0;
+    glm::dvec2 p = spherical_coordinates(s.wo);
+    int c = grid.cell(p.x, p.y);
+    cells[c].observed += 1.0;
+    draws.add(c, p.x, p.y);
   }
   integrate_expected(
       [&](double cos_theta, double phi) {
         return double(bsdf.pdf(wi, glm::vec3(spherical_direction(cos_theta, phi))));
       },
-      grid, o, cells, result);
+      grid, o, draws, cells, result);
   result.delta_atoms = atoms.size();
   for (const auto& [key, atom] : atoms) {
     cells.push_back({atom.observed, atom.probability * double(o.sample_count)});
@@ -201,6 +228,7 @@ ChiSquareResult chi_square_directions(const DirectionSampler& sampler, const Chi
   ChiSquareResult result;
   Grid grid = spherical_grid(o);
   std::vector<Cell> cells(std::size_t(grid.nx) * grid.ny);
+  Draws draws(cells.size());
   detail::Random random(o.seed);
   for (std::size_t n = 0; n < o.sample_count; ++n) {
     DirectionSample s = sampler.sample(random.uniform2());
@@ -210,13 +238,16 @@ ChiSquareResult chi_square_directions(const DirectionSampler& sampler, const Chi
       continue;
     }
     if (!(sampler.pdf(s.w) > 0.0f)) ++result.outside_support;
-    cells[spherical_cell(grid, s.w)].observed += 1.0;
+    glm::dvec2 p = spherical_coordinates(s.w);
+    int c = grid.cell(p.x, p.y);
+    cells[c].observed += 1.0;
+    draws.add(c, p.x, p.y);
   }
   integrate_expected(
       [&](double cos_theta, double phi) {
         return double(sampler.pdf(glm::vec3(spherical_direction(cos_theta, phi))));
       },
-      grid, o, cells, result);
+      grid, o, draws, cells, result);
   finish(std::move(cells), o, result);
   return result;
 }
@@ -230,6 +261,7 @@ ChiSquareResult chi_square_planar(const PlanarSampler& sampler, const ChiSquareO
   Grid grid{sampler.lower.x, sampler.upper.x,  sampler.lower.y,
             sampler.upper.y, o.cos_theta_bins, o.phi_bins};
   std::vector<Cell> cells(std::size_t(grid.nx) * grid.ny);
+  Draws draws(cells.size());
   std::size_t outside_rectangle = 0;
   detail::Random random(o.seed);
   for (std::size_t n = 0; n < o.sample_count; ++n) {
@@ -240,14 +272,16 @@ ChiSquareResult chi_square_planar(const PlanarSampler& sampler, const ChiSquareO
       continue;
     }
     if (!(sampler.pdf(p) > 0.0f)) ++result.outside_support;
-    cells[grid.cell(p.x, p.y)].observed += 1.0;
+    int c = grid.cell(p.x, p.y);
+    cells[c].observed += 1.0;
+    draws.add(c, p.x, p.y);
   }
   if (outside_rectangle > 0) {
     result.failure = std::to_string(outside_rectangle) + " draws outside the test rectangle";
   }
   integrate_expected(
       [&](double x, double y) { return double(sampler.pdf(glm::vec2(float(x), float(y)))); }, grid,
-      o, cells, result);
+      o, draws, cells, result);
   finish(std::move(cells), o, result);
   return result;
 }

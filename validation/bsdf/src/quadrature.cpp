@@ -1,6 +1,8 @@
 #include "quadrature.h"
 
+#include <algorithm>
 #include <cmath>
+#include <queue>
 
 namespace twinray::validation::detail {
 namespace {
@@ -18,7 +20,12 @@ const double kWgk[8] = {0.022935322010529224963732008058970, 0.06309209262997855
 const double kWg[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
                        0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
 
-Quadrature kronrod_panel(const std::function<double(double)>& f, double a, double b) {
+struct Panel {
+  double a, b, value, error;
+  bool operator<(const Panel& other) const { return error < other.error; }
+};
+
+Panel kronrod_panel(const std::function<double(double)>& f, double a, double b) {
   double center = 0.5 * (a + b), half = 0.5 * (b - a);
   double f_center = f(center);
   double kronrod = kWgk[7] * f_center, gauss = kWg[3] * f_center;
@@ -27,50 +34,62 @@ Quadrature kronrod_panel(const std::function<double(double)>& f, double a, doubl
     kronrod += kWgk[i] * pair;
     if (i % 2 == 1) gauss += kWg[i / 2] * pair;
   }
-  return {kronrod * half, std::abs(kronrod - gauss) * half};
-}
-
-void refine(const std::function<double(double)>& f, double a, double b, double tolerance, int depth,
-            const QuadratureSettings& s, Quadrature& total) {
-  if (depth >= s.min_depth) {
-    Quadrature q = kronrod_panel(f, a, b);
-    if (q.error <= tolerance || depth >= s.max_depth) {
-      total.value += q.value;
-      total.error += q.error;
-      return;
-    }
-  }
-  double m = 0.5 * (a + b);
-  refine(f, a, m, 0.5 * tolerance, depth + 1, s, total);
-  refine(f, m, b, 0.5 * tolerance, depth + 1, s, total);
+  return {a, b, kronrod * half, std::abs(kronrod - gauss) * half};
 }
 
 }  // namespace
 
-Quadrature adaptive_gauss_kronrod(const std::function<double(double)>& f, double a, double b,
+Quadrature adaptive_gauss_kronrod(const std::function<double(double)>& f,
+                                  const std::vector<double>& breaks,
                                   const QuadratureSettings& settings) {
-  Quadrature total;
-  refine(f, a, b, settings.tolerance, 0, settings, total);
-  return total;
+  std::priority_queue<Panel> panels;
+  double value = 0.0, error = 0.0;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    if (!(breaks[i + 1] > breaks[i])) continue;
+    Panel p = kronrod_panel(f, breaks[i], breaks[i + 1]);
+    value += p.value;
+    error += p.error;
+    panels.push(p);
+  }
+  while (error > settings.tolerance && int(panels.size()) < settings.max_panels) {
+    Panel worst = panels.top();
+    panels.pop();
+    double m = 0.5 * (worst.a + worst.b);
+    Panel left = kronrod_panel(f, worst.a, m), right = kronrod_panel(f, m, worst.b);
+    value += left.value + right.value - worst.value;
+    error += left.error + right.error - worst.error;
+    panels.push(left);
+    panels.push(right);
+  }
+  // Recompute the sums: the running updates accumulate cancellation error.
+  Quadrature q;
+  while (!panels.empty()) {
+    q.value += panels.top().value;
+    q.error += panels.top().error;
+    panels.pop();
+  }
+  return q;
 }
 
-Quadrature adaptive_gauss_kronrod_2d(const std::function<double(double, double)>& f, double x0,
-                                     double x1, double y0, double y1,
+Quadrature adaptive_gauss_kronrod_2d(const std::function<double(double, double)>& f,
+                                     const std::vector<double>& x_breaks,
+                                     const std::vector<double>& y_breaks,
                                      const QuadratureSettings& settings) {
+  double width_x = x_breaks.back() - x_breaks.front();
   QuadratureSettings inner = settings;
-  inner.tolerance = settings.tolerance / (2.0 * (x1 - x0));
+  inner.tolerance = settings.tolerance / (2.0 * width_x);
   double inner_error = 0.0;
   auto line = [&](double x) {
-    Quadrature q = adaptive_gauss_kronrod([&](double y) { return f(x, y); }, y0, y1, inner);
+    Quadrature q = adaptive_gauss_kronrod([&](double y) { return f(x, y); }, y_breaks, inner);
     inner_error = std::max(inner_error, q.error);
     return q.value;
   };
   QuadratureSettings outer = settings;
   outer.tolerance = 0.5 * settings.tolerance;
-  Quadrature q = adaptive_gauss_kronrod(line, x0, x1, outer);
-  // The outer weights are positive and sum to (x1 - x0): the inner errors contribute at most
+  Quadrature q = adaptive_gauss_kronrod(line, x_breaks, outer);
+  // The outer weights are positive and sum to width_x: the inner errors contribute at most
   // that width times the largest of them.
-  q.error += (x1 - x0) * inner_error;
+  q.error += width_x * inner_error;
   return q;
 }
 

@@ -1,0 +1,17 @@
+// The local scene store behind core/scene_access.h in tests/bsdf: textures the suite's
+// materials need (roughplastic's precomputed transmittance table) are registered here.
+#ifndef TWINRAY_TESTS_BSDF_SCENE_ACCESS_LOCAL_H
+#define TWINRAY_TESTS_BSDF_SCENE_ACCESS_LOCAL_H
+
+#include <vector>
+
+#include "core/scene_types.h"
+
+namespace tr::bsdf_suite {
+
+// Appends the texels, points t.texel_offset at them and returns the new texture's index.
+uint add_texture(Texture t, const std::vector<vec4>& texels);
+
+}  // namespace tr::bsdf_suite
+
+#endif
