@@ -96,7 +96,7 @@ Material plastic(float eta, vec3 diffuse_reflectance, vec3 specular_reflectance,
   // Material.extra (core/bsdf/plastic.h).
   float d_mean = (diffuse_reflectance.x + diffuse_reflectance.y + diffuse_reflectance.z) / 3.0f;
   float s_mean = (specular_reflectance.x + specular_reflectance.y + specular_reflectance.z) / 3.0f;
-  m.extra = d_mean + s_mean > 0.0f ? s_mean / (d_mean + s_mean) : 0.0f;
+  m.extra = d_mean + s_mean > 0.0f ? s_mean / (d_mean + s_mean) : 0.5f;  // as the loader
   return m;
 }
 
