@@ -8,6 +8,7 @@
 #include "gpu_backend/gpu_error.h"
 #include "gpu_backend/gpu_scene.h"
 #include "gpu_backend/rt_pipeline.h"
+#include "gpu_backend/scene_features.h"
 #include "gpu_backend/variance_merge.h"
 #include "gpu_backend/vk_device.h"
 #include "gpu_backend/vk_instance.h"
@@ -35,8 +36,10 @@ RenderResult render_gpu(const Scene& scene, const RenderOptions& options) {
 }
 
 RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options,
-                                const uint32_t* raygen, size_t raygen_bytes) {
-  const Clock::time_point start = Clock::now();
+                                const uint32_t* raygen, size_t raygen_bytes,
+                                const GpuTuning& tuning, GpuTimings* timings) {
+  GpuTimings timing;
+  Clock::time_point phase = Clock::now();
   const Camera& camera = scene.buffers.globals.camera;
   const uint32_t width = camera.width;
   const uint32_t height = camera.height;
@@ -47,7 +50,12 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
   VulkanInstance instance;
   const std::vector<DeviceInfo> devices = query_devices(instance.handle());
   VulkanDevice device(instance, select_device(devices, options.device));
-  RayTracingPipeline pipeline(device, raygen, raygen_bytes);
+  timing.setup_seconds = seconds_since(phase);
+  phase = Clock::now();
+  RayTracingPipeline pipeline(device, raygen, raygen_bytes,
+                              tuning.specialize ? scene_features(scene.buffers) : all_features());
+  timing.pipeline_seconds = seconds_since(phase);
+  phase = Clock::now();
 
   const VkDeviceSize batch_bytes = pixels * sizeof(PixelBatch);
   Buffer batches(device, batch_bytes,
@@ -56,6 +64,8 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
   Buffer readback(device, batch_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   GpuScene gpu_scene(device, scene.buffers, pipeline.set_layout(), batches);
+  timing.build_seconds = seconds_since(phase);
+  phase = Clock::now();
 
   RenderResult result;
   result.width = width;
@@ -114,7 +124,9 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
   result.mean = moments.mean();
   result.variance = moments.variance();
   result.stats.samples = static_cast<uint64_t>(spp) * pixels;
-  result.stats.seconds = seconds_since(start);
+  timing.render_seconds = seconds_since(phase);
+  result.stats.seconds = timing.build_seconds + timing.render_seconds;
+  if (timings) *timings = timing;
   return result;
 }
 

@@ -9,16 +9,32 @@
 
 namespace tr {
 
-// Renders `scene` with the core's path integrator in ray-tracing shaders. Throws GpuError
+// Renders `scene` with the core's path integrator in ray-tracing shaders. stats.seconds
+// counts the acceleration-structure builds and the dispatches (as the CPU backend counts
+// its BVH build and sampling), not Vulkan start-up or pipeline compilation. Throws GpuError
 // (one line) when no usable device exists, naming what is missing and suggesting
 // --backend cpu, and when the Vulkan validation layer (TWINRAY_VK_VALIDATION=1) reports an
 // error.
 RenderResult render_gpu(const Scene& scene, const RenderOptions& options);
 
+// Knobs and timings of the GPU backend beyond RenderOptions, for tests and measurements.
+struct GpuTuning {
+  bool specialize = true;  // false: the all-features pipeline
+};
+
+struct GpuTimings {
+  double setup_seconds = 0.0;     // instance, device, buffers
+  double pipeline_seconds = 0.0;  // ray-tracing pipeline creation (shader compilation)
+  double build_seconds = 0.0;     // acceleration structures
+  double render_seconds = 0.0;    // dispatches and batch merging
+};
+
 // render_gpu with another ray-generation shader writing the same PixelBatch records
 // (shaders/batch.h); tests probe traversal with it.
 RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options,
-                                const uint32_t* raygen, size_t raygen_bytes);
+                                const uint32_t* raygen, size_t raygen_bytes,
+                                const GpuTuning& tuning = GpuTuning(),
+                                GpuTimings* timings = nullptr);
 
 // `twinray devices`: lists every Vulkan device, whether it is usable and, if not, what it
 // lacks. argv holds the arguments after `devices`. Returns 0 when at least one device is

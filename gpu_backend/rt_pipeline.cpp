@@ -46,7 +46,7 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type, 
 }  // namespace
 
 RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen,
-                                       size_t raygen_bytes)
+                                       size_t raygen_bytes, const SceneFeatures& features)
     : device_(device) {
   VkDevice d = device.handle();
   std::vector<VkShaderModule> modules;
@@ -92,6 +92,12 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
         {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, spirv_hit, sizeof(spirv_hit)},
         {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, spirv_shape, sizeof(spirv_shape)},
     };
+    // One uint per constant_id, in SceneFeatures order.
+    const uint32_t kConstants = sizeof(SceneFeatures) / sizeof(uint32_t);
+    VkSpecializationMapEntry entries[kConstants];
+    for (uint32_t i = 0; i < kConstants; ++i)
+      entries[i] = {i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
+    VkSpecializationInfo specialization{kConstants, entries, sizeof(SceneFeatures), &features};
     std::vector<VkPipelineShaderStageCreateInfo> stage_infos;
     for (const Stage& s : stages) {
       modules.push_back(make_module(d, s.code, s.bytes));
@@ -100,6 +106,7 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
       info.stage = s.stage;
       info.module = modules.back();
       info.pName = "main";
+      info.pSpecializationInfo = &specialization;
       stage_infos.push_back(info);
     }
     const uint32_t U = VK_SHADER_UNUSED_KHR;

@@ -2,11 +2,13 @@
 //   groups: 0 raygen | 1 miss (closest query) | 2 miss (occlusion query)
 //           3 triangle hit group (closest hit) | 4 procedural hit group (intersection +
 //           closest hit), matching HIT_GROUP_TRIANGLES / HIT_GROUP_PROCEDURAL.
-// Set 0 holds the bindings of core/bindings.h; the push constants are a BatchParams.
+// Set 0 holds the bindings of core/bindings.h; the push constants are a BatchParams; every
+// stage is specialized with the scene's feature masks (shaders/features.glsl).
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include "gpu_backend/scene_features.h"
 #include "gpu_backend/vk_device.h"
 
 namespace tr {
@@ -14,7 +16,8 @@ namespace tr {
 class RayTracingPipeline {
  public:
   // raygen: SPIR-V of the ray-generation shader (shaders/raygen.rgen for renders).
-  RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen, size_t raygen_bytes);
+  RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen, size_t raygen_bytes,
+                     const SceneFeatures& features);
   ~RayTracingPipeline();
   RayTracingPipeline(const RayTracingPipeline&) = delete;
   RayTracingPipeline& operator=(const RayTracingPipeline&) = delete;

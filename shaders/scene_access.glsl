@@ -2,6 +2,7 @@
 #ifndef TWINRAY_SHADERS_SCENE_ACCESS_GLSL
 #define TWINRAY_SHADERS_SCENE_ACCESS_GLSL
 
+#include "shaders/features.glsl"
 #include "core/bindings.h"
 #include "core/scene_access.h"
 

@@ -1,0 +1,25 @@
+// The scene's feature masks, passed to every shader stage as the specialization constants
+// of shaders/features.glsl (constant_id 0..5, in this struct's order).
+#pragma once
+
+#include <cstdint>
+
+#include "scenes/scene.h"
+
+namespace tr {
+
+struct SceneFeatures {
+  uint32_t bsdf_types = 0;        // bit BSDF_*
+  uint32_t emitter_types = 0;     // bit EMITTER_*
+  uint32_t shape_types = 0;       // bit SHAPE_*
+  uint32_t texture_types = 0;     // bit TEXTURE_*
+  uint32_t material_flags = 0;    // union of Material.flags
+  uint32_t integrator_types = 0;  // bit INTEGRATOR_*
+};
+
+SceneFeatures scene_features(const SceneBuffers& scene);
+
+// Every bit set: the all-features pipeline.
+SceneFeatures all_features();
+
+}  // namespace tr
