@@ -161,3 +161,32 @@ TEST(ValidationLibrary, GaussKronrodIntegratesKnownFunctions) {
                                             {0.0, 1.0}, {0.0, 2.0}, s);
   EXPECT_NEAR(q2.value, 0.5 * 8.0 / 3.0, 1e-12);
 }
+
+TEST(ValidationLibrary, DeltaLobesWithTheSameDirectionAreToldApartByLabel) {
+  // A mask-like pass-through (probability 0.4) and a refraction straight through (0.6) at
+  // normal incidence: one direction, two lobes, each reporting its own probability.
+  auto sampler = [](unsigned second_label) {
+    tv::BsdfUnderTest b;
+    b.name = "pass-through + refraction";
+    b.pdf = [](const glm::vec3&, const glm::vec3&) { return 0.0f; };
+    b.sample = [second_label](const glm::vec3& wi, float u1, const glm::vec2&) {
+      tv::BsdfSample s;
+      s.delta = true;
+      s.weight = glm::vec3(1.0f);
+      s.wo = -wi;
+      bool pass = u1 < 0.4f;
+      s.pdf = pass ? 0.4f : 0.6f;
+      s.lobe = pass ? 1u : second_label;
+      return s;
+    };
+    return b;
+  };
+  const glm::vec3 normal(0.0f, 0.0f, 1.0f);
+  tv::ConsistencyOptions o;
+  o.sample_count = 1000;
+  tv::ChiSquareResult labelled = tv::chi_square_bsdf(sampler(2u), normal, small());
+  EXPECT_EQ(labelled.delta_atoms, 2u);
+  EXPECT_GT(labelled.p_value, 1e-4);
+  EXPECT_TRUE(tv::consistency_check(sampler(2u), normal, o).passed());
+  EXPECT_GT(tv::consistency_check(sampler(1u), normal, o).delta_mismatch, 0u);
+}
