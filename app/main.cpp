@@ -1,4 +1,4 @@
-// twinray: the command line. Verbs: render, devices, compare.
+// twinray: the command line. Verbs: render, devices, compare, validate, converge.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -11,6 +11,10 @@
 #ifdef TWINRAY_HAS_COMPARE
 #include "validation/image/compare_command.h"
 #endif
+#ifdef TWINRAY_HAS_HARNESS
+#include "validation/harness/converge_command.h"
+#include "validation/harness/validate_command.h"
+#endif
 
 namespace {
 
@@ -19,6 +23,8 @@ const char* kUsage =
     "  render SCENE.xml [options]   render a Mitsuba 3 XML scene (twinray render --help)\n"
     "  devices                      list Vulkan devices and whether the GPU backend can use them\n"
     "  compare A.exr B.exr [opts]   compare two renders (twinray compare --help)\n"
+    "  validate SUITE [opts]        render a suite on CPU (and GPU), compare, HTML report\n"
+    "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
     "             5 output not writable, 6 internal error\n";
 
@@ -40,6 +46,10 @@ int main(int argc, char** argv) {
 #endif
 #ifdef TWINRAY_HAS_COMPARE
   if (verb == "compare") return tr::compare_command(argc - 1, argv + 1);
+#endif
+#ifdef TWINRAY_HAS_HARNESS
+  if (verb == "validate") return tr::validate_command(argc - 1, argv + 1);
+  if (verb == "converge") return tr::converge_command(argc - 1, argv + 1);
 #endif
   std::fprintf(stderr, "twinray: unknown verb '%s'\n%s", verb.c_str(), kUsage);
   return tr::kExitUsage;
