@@ -9,51 +9,11 @@
 
 #include "core/ray.h"
 #include "core/scene_types.h"
+#include "core/special_functions.h"
 #include "core/transform.h"
 #include "core/warp.h"
 
 TR_NAMESPACE_BEGIN
-
-// Error function, Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7).
-INLINE float erf_approx(float x) {
-  float s = x < 0.0f ? -1.0f : 1.0f;
-  float a = abs(x);
-  float t = 1.0f / (1.0f + 0.3275911f * a);
-  float y = 1.0f - (((((1.061405429f * t - 1.453152027f) * t) + 1.421413741f) * t - 0.284496736f) * t +
-                    0.254829592f) * t * exp(-a * a);
-  return s * y;
-}
-
-// Inverse error function, Giles, "Approximating the erfinv function", GPU Computing Gems
-// Jade Edition ch. 10 (2011), single-precision version.
-INLINE float erfinv_approx(float x) {
-  float w = -log((1.0f - x) * (1.0f + x));
-  float p;
-  if (w < 5.0f) {
-    w = w - 2.5f;
-    p = 2.81022636e-08f;
-    p = 3.43273939e-07f + p * w;
-    p = -3.5233877e-06f + p * w;
-    p = -4.39150654e-06f + p * w;
-    p = 0.00021858087f + p * w;
-    p = -0.00125372503f + p * w;
-    p = -0.00417768164f + p * w;
-    p = 0.246640727f + p * w;
-    p = 1.50140941f + p * w;
-  } else {
-    w = sqrt(w) - 3.0f;
-    p = -0.000200214257f;
-    p = 0.000100950558f + p * w;
-    p = 0.00134934322f + p * w;
-    p = -0.00367342844f + p * w;
-    p = 0.00573950773f + p * w;
-    p = -0.0076224613f + p * w;
-    p = 0.00943887047f + p * w;
-    p = 1.00167406f + p * w;
-    p = 2.83297682f + p * w;
-  }
-  return p * x;
-}
 
 // One axis of the gaussian filter, importance sampled: x follows the normal density of
 // standard deviation sigma truncated to [-r, r], by inversion of its CDF (pbrt-v4 §A.4.2

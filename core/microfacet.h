@@ -14,6 +14,7 @@
 #define TWINRAY_CORE_MICROFACET_H
 
 #include "core/prelude.h"
+#include "core/special_functions.h"
 #include "core/warp.h"
 
 TR_NAMESPACE_BEGIN
@@ -36,56 +37,6 @@ INLINE Microfacet microfacet_make(bool beckmann, float alpha_u, float alpha_v,
   d.alpha_u = max(alpha_u, MICROFACET_MIN_ALPHA);
   d.alpha_v = max(alpha_v, MICROFACET_MIN_ALPHA);
   return d;
-}
-
-// erf(x) = 1 - erfc(x); erfc by the Chebyshev fit of Numerical Recipes in C, 2nd ed., §6.2
-// (erfcc), fractional error < 1.2e-7.
-INLINE float beckmann_erf(float x) {
-  float z = abs(x);
-  float t = 1.0f / (1.0f + 0.5f * z);
-  float poly =
-      -1.26551223f +
-      t * (1.00002368f +
-           t * (0.37409196f +
-                t * (0.09678418f +
-                     t * (-0.18628806f +
-                          t * (0.27886807f +
-                               t * (-1.13520398f +
-                                    t * (1.48851587f + t * (-0.82215223f + t * 0.17087277f))))))));
-  float erfc_z = t * exp(-z * z + poly);
-  return x >= 0.0f ? 1.0f - erfc_z : erfc_z - 1.0f;
-}
-
-// Inverse error function, single-precision fit of Giles, "Approximating the erfinv function",
-// GPU Computing Gems Jade Edition, 2011. |x| is kept below 1 so the result stays finite.
-INLINE float beckmann_erfinv(float x) {
-  x = clamp(x, -ONE_MINUS_EPSILON, ONE_MINUS_EPSILON);
-  float w = -log((1.0f - x) * (1.0f + x));
-  float p;
-  if (w < 5.0f) {
-    w = w - 2.5f;
-    p = 2.81022636e-08f;
-    p = 3.43273939e-07f + p * w;
-    p = -3.5233877e-06f + p * w;
-    p = -4.39150654e-06f + p * w;
-    p = 0.00021858087f + p * w;
-    p = -0.00125372503f + p * w;
-    p = -0.00417768164f + p * w;
-    p = 0.246640727f + p * w;
-    p = 1.50140941f + p * w;
-  } else {
-    w = sqrt(w) - 3.0f;
-    p = -0.000200214257f;
-    p = 0.000100950558f + p * w;
-    p = 0.00134934322f + p * w;
-    p = -0.00367342844f + p * w;
-    p = 0.00573950773f + p * w;
-    p = -0.0076224613f + p * w;
-    p = 0.00943887047f + p * w;
-    p = 1.00167406f + p * w;
-    p = 2.83297682f + p * w;
-  }
-  return p * x;
 }
 
 // Normal distribution D(m) (Walter et al. eqs. 25 and 33, anisotropic: Heitz 2014 eqs. 71, 86).
@@ -137,7 +88,7 @@ INLINE float microfacet_smith_g1_exact(Microfacet d, vec3 v, vec3 m) {
   if (dot(v, m) * v.z <= 0.0f) return 0.0f;
   if (xy_alpha_2 == 0.0f) return 1.0f;
   float a = abs(v.z) / sqrt(xy_alpha_2);
-  float lambda = 0.5f * (beckmann_erf(a) - 1.0f) + exp(-a * a) / (2.0f * a) * INV_SQRT_PI;
+  float lambda = 0.5f * (erf_approx(a) - 1.0f) + exp(-a * a) / (2.0f * a) * INV_SQRT_PI;
   return 1.0f / (1.0f + max(lambda, 0.0f));
 }
 
@@ -159,17 +110,17 @@ INLINE vec2 microfacet_sample_visible_11(bool beckmann, float cos_theta_i, vec2 
     // the normal distribution.
     float tan_theta_i = safe_sqrt(1.0f - cos_theta_i * cos_theta_i) / cos_theta_i;
     float cot_theta_i = 1.0f / tan_theta_i;
-    float maxval = beckmann_erf(cot_theta_i);
+    float maxval = erf_approx(cot_theta_i);
     u = clamp(u, vec2(1e-6f), vec2(1.0f - 1e-6f));
-    float x = maxval - (maxval + 1.0f) * beckmann_erf(sqrt(-log(u.x)));
+    float x = maxval - (maxval + 1.0f) * erf_approx(sqrt(-log(u.x)));
     float target = u.x * (1.0f + maxval + INV_SQRT_PI * tan_theta_i * exp(-sqr(cot_theta_i)));
     for (int i = 0; i < 3; ++i) {
-      float slope = beckmann_erfinv(x);
+      float slope = erfinv_approx(x);
       float value = 1.0f + x + INV_SQRT_PI * tan_theta_i * exp(-slope * slope) - target;
       float derivative = 1.0f - slope * tan_theta_i;
       x -= value / derivative;
     }
-    return vec2(beckmann_erfinv(x), beckmann_erfinv(2.0f * u.y - 1.0f));
+    return vec2(erfinv_approx(x), erfinv_approx(2.0f * u.y - 1.0f));
   }
   // GGX: Heitz 2018 (Listing 1) — a uniform point on the disk, its upper half squeezed by
   // (1 + cos theta_i) / 2, projected onto the hemisphere, read as a slope of the alpha = 1
