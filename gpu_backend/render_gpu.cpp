@@ -106,6 +106,10 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
                            &barrier, 0, nullptr, 0, nullptr);
     });
     const double dispatch_seconds = seconds_since(dispatch_start);
+    if (done == 0) {
+      timing.first_dispatch_seconds = dispatch_seconds;
+      timing.first_dispatch_spp = params.sample_count;
+    }
     std::memcpy(host_batch.data(), readback.mapped(), batch_bytes);
     moments.merge(host_batch.data(), params.sample_count);
     for (const PixelBatch& b : host_batch) {

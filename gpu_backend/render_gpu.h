@@ -23,10 +23,12 @@ struct GpuTuning {
 };
 
 struct GpuTimings {
-  double setup_seconds = 0.0;     // instance, device, buffers
-  double pipeline_seconds = 0.0;  // ray-tracing pipeline creation (shader compilation)
-  double build_seconds = 0.0;     // acceleration structures
-  double render_seconds = 0.0;    // dispatches and batch merging
+  double setup_seconds = 0.0;           // instance, device, buffers
+  double pipeline_seconds = 0.0;        // ray-tracing pipeline creation (shader compilation)
+  double build_seconds = 0.0;           // acceleration structures
+  double render_seconds = 0.0;          // dispatches and batch merging
+  double first_dispatch_seconds = 0.0;  // part of render_seconds; lavapipe compiles here
+  uint32_t first_dispatch_spp = 0;
 };
 
 // render_gpu with another ray-generation shader writing the same PixelBatch records
