@@ -1,4 +1,5 @@
-// The integrator interface every backend drives, identical on CPU and GPU:
+// The integrators, Mitsuba 3's `path` and `direct`, as one vertex routine every backend
+// drives identically:
 //
 //   PathState s = integrator_begin(pixel, sample_index, seed);
 //   while (integrator_alive(s)) {
@@ -8,14 +9,32 @@
 //   }
 //   vec3 L = integrator_result(s);   // reject (count, score 0) if !radiance_is_finite(L)
 //
-// Random numbers come from the counter-based RNG keyed by (seed, pixel, sample index), so a
-// sample's value does not depend on which thread, tile or dispatch computes it.
+// `path` (src/integrators/path.cpp): unidirectional path tracing; at each vertex one emitter
+// sample and one BSDF sample combined by the power heuristic (Veach 1997 §9.2), Russian
+// roulette from `rr_depth` on with Mitsuba's survival probability, `max_depth` counting
+// scattering events plus one (1: emitters seen directly, 2: direct illumination, -1:
+// unbounded), `hide_emitters` letting camera rays pass through area emitters.
+// `direct` (src/integrators/direct.cpp): at the camera ray's hit, `emitter_samples` emitter
+// samples and `bsdf_samples` BSDF samples combined by the power heuristic with sample counts
+// (Veach 1997 eq. 9.13 with n_i p_i). One call scores what the last ray found and then runs
+// one sampling round at the shading point: round k traces emitter sample k's shadow ray
+// (k < emitter_samples) and BSDF sample k's ray (k < bsdf_samples); rounds past the last
+// BSDF sample trace an empty ray (tmax = 0). Unlike Mitsuba, delta emitter samples are
+// averaged over `emitter_samples` like the others (Mitsuba weights each of them 1, which
+// over-counts point and directional lights when emitter_samples > 1).
+//
+// Both integrators share one code path, so each BSDF, emitter and surface routine is
+// inlined once into a GPU kernel. Random numbers come from the counter-based RNG keyed by
+// (seed, pixel, sample index).
 #ifndef TWINRAY_CORE_INTEGRATOR_H
 #define TWINRAY_CORE_INTEGRATOR_H
 
+#include "core/bsdf.h"
 #include "core/camera.h"
-#include "core/integrators/direct.h"
-#include "core/integrators/path.h"
+#include "core/emitter.h"
+#include "core/integrators/path_state.h"
+#include "core/interaction.h"
+#include "core/mis.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -35,25 +54,142 @@ INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
   s.depth = 0u;
   s.alive = (g.integrator.type == INTEGRATOR_PATH && g.integrator.max_depth == 0) ? 0u : 1u;
   s.stage = 0u;
-  s.anchor_frame = frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
-  s.anchor_p = vec3(0.0f);
-  s.anchor_material = 0u;
-  s.anchor_ng = vec3(0.0f, 0.0f, 1.0f);
-  s.anchor_smooth = 0u;
-  s.anchor_wi = vec3(0.0f, 0.0f, 1.0f);
-  s.pad0 = 0.0f;
-  s.anchor_uv = vec2(0.0f);
+  s.anchor.frame = frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
+  s.anchor.p = vec3(0.0f);
+  s.anchor.material = 0u;
+  s.anchor.ng = vec3(0.0f, 0.0f, 1.0f);
+  s.anchor.pad0 = 0u;
+  s.anchor.wi = vec3(0.0f, 0.0f, 1.0f);
+  s.anchor.pad1 = 0.0f;
+  s.anchor.uv = vec2(0.0f);
   return s;
 }
 
 INLINE bool integrator_alive(PathState s) { return s.alive != 0u; }
 
+INLINE ShadingPoint shading_point(SurfaceInteraction si) {
+  ShadingPoint sp;
+  sp.frame = si.frame;
+  sp.p = si.p;
+  sp.material = si.material;
+  sp.ng = si.ng;
+  sp.pad0 = 0u;
+  sp.wi = si.wi;
+  sp.pad1 = 0.0f;
+  sp.uv = si.uv;
+  return sp;
+}
+
+// Russian roulette with Mitsuba's survival probability min(max(throughput) eta^2, 0.95);
+// survivors are divided by it (pbrt-v4 §14.1.4).
+INLINE bool russian_roulette_survives(INOUT(PathState) s, Integrator it) {
+  float throughput_max = max_component(s.throughput);
+  if (int(s.depth) >= it.rr_depth) {
+    float q = min(throughput_max * s.eta * s.eta, 0.95f);
+    if (!(rng_next_1d(s.rng) < q)) return false;
+    s.throughput /= q;
+  }
+  return throughput_max != 0.0f;
+}
+
 INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   Integrator it = scene_globals().integrator;
-  if (TR_HAS_INTEGRATOR(INTEGRATOR_DIRECT) && it.type == INTEGRATOR_DIRECT) return direct_step(s, hit, it);
-  if (TR_HAS_INTEGRATOR(INTEGRATOR_PATH) && it.type == INTEGRATOR_PATH) return path_step(s, hit, it);
-  s.alive = 0u;
-  return no_shadow_ray();
+  bool direct = TR_HAS_INTEGRATOR(INTEGRATOR_DIRECT) && it.type == INTEGRATOR_DIRECT;
+  bool first = direct ? s.stage == 0u : s.depth == 0u;
+  // Sample counts of the two techniques (path: one each) and the BSDF technique's weight.
+  float n_bsdf = direct ? float(it.bsdf_samples) : 1.0f;
+  float n_emitter = direct ? float(it.emitter_samples) : 1.0f;
+  float frac_bsdf = n_bsdf / (n_bsdf + n_emitter);
+  float frac_emitter = n_emitter / (n_bsdf + n_emitter);
+
+  // ---- What the ray found: emission, weighted against emitter sampling from prev_p.
+  bool found_surface = hit.shape != NO_INDEX;
+  SurfaceInteraction si;
+  vec3 le = vec3(0.0f);
+  float em_pdf = 0.0f;
+  if (found_surface) {
+    si = surface_interaction(s.ray, hit);
+    if (si.emitter != NO_INDEX) {
+      if (first && it.hide_emitters != 0u) {
+        s.ray = spawn_ray(si.p, si.ng, s.ray.d);
+        return no_shadow_ray();
+      }
+      le = eval_emitter_surface(si);
+      em_pdf = pdf_emitter_surface(s.prev_p, si);
+    }
+  } else if (!(first && it.hide_emitters != 0u)) {
+    le = eval_environment(s.ray.d);
+    em_pdf = pdf_environment(s.ray.d);
+  }
+  if (any(notEqual(le, vec3(0.0f))) && any(notEqual(s.throughput, vec3(0.0f)))) {
+    if (s.prev_bsdf_delta != 0u) em_pdf = 0.0f;
+    float weight = first ? 1.0f : power_heuristic(s.prev_bsdf_pdf * frac_bsdf, em_pdf * frac_emitter) / n_bsdf;
+    s.radiance += s.throughput * le * weight;
+  }
+
+  // ---- Where to sample next: the path's new vertex, or the direct integrator's first hit.
+  uint round = 0u;
+  if (direct) {
+    if (first) {
+      if (!found_surface) {
+        s.alive = 0u;
+        return no_shadow_ray();
+      }
+      s.anchor = shading_point(si);
+    }
+    round = s.stage;
+    s.stage += 1u;
+    if (round >= max(it.emitter_samples, it.bsdf_samples)) {
+      s.alive = 0u;
+      return no_shadow_ray();
+    }
+  } else {
+    if (!found_surface || !(it.max_depth < 0 || int(s.depth) + 1 < it.max_depth)) {
+      s.alive = 0u;
+      return no_shadow_ray();
+    }
+    s.anchor = shading_point(si);
+  }
+  ShadingPoint sp = s.anchor;
+  Material m = scene_material(sp.material);
+  vec3 base = direct ? vec3(1.0f) : s.throughput;
+
+  // ---- Emitter sampling.
+  ShadowRay sr = no_shadow_ray();
+  if (round < uint(n_emitter) && (bsdf_flags(m, sp.uv) & BSDF_SMOOTH) != 0u) {
+    EmitterSample es = sample_emitter(sp.p, s.rng);
+    if (es.pdf > 0.0f) {
+      vec3 wo = frame_to_local(sp.frame, es.d);
+      vec3 f = bsdf_eval(m, sp.uv, sp.wi, wo);
+      float mis = es.delta != 0u ? 1.0f
+                                 : power_heuristic(es.pdf * frac_emitter, bsdf_pdf(m, sp.uv, sp.wi, wo) * frac_bsdf);
+      sr.contribution = base * f * es.weight * (mis / n_emitter);
+      if (any(notEqual(sr.contribution, vec3(0.0f)))) {
+        sr.enabled = 1u;
+        sr.ray = shadow_ray_to(sp.p, sp.ng, es.p, es.n, es.d, es.dist);
+      }
+    }
+  }
+
+  // ---- BSDF sampling: the next ray.
+  s.throughput = vec3(0.0f);
+  s.ray = make_ray(sp.p, sp.frame.n, 0.0f);
+  s.prev_p = sp.p;
+  if (round < uint(n_bsdf)) {
+    float u1 = rng_next_1d(s.rng);
+    BsdfSample bs = bsdf_sample(m, sp.uv, sp.wi, u1, rng_next_2d(s.rng));
+    s.ray = spawn_ray(sp.p, sp.ng, frame_to_world(sp.frame, bs.wo));
+    s.throughput = base * bs.weight;
+    s.eta *= bs.eta;
+    s.prev_bsdf_pdf = bs.pdf;
+    s.prev_bsdf_delta = (bs.lobe & BSDF_DELTA) != 0u ? 1u : 0u;
+    if (!direct) {
+      s.depth += 1u;
+      bool survives = russian_roulette_survives(s, it);
+      s.alive = (survives && bs.pdf > 0.0f) ? 1u : 0u;
+    }
+  }
+  return sr;
 }
 
 INLINE void integrator_add_unoccluded(INOUT(PathState) s, ShadowRay sr) { s.radiance += sr.contribution; }

@@ -9,28 +9,34 @@
 
 TR_NAMESPACE_BEGIN
 
+// A surface point where light is sampled: the path's current vertex, or the direct
+// integrator's first hit, which all of its sampling rounds share.
+struct ShadingPoint {
+  Frame frame;    // shading frame
+  vec3 p;
+  uint material;
+  vec3 ng;        // geometric normal
+  uint pad0;
+  vec3 wi;        // towards the previous vertex, local to frame
+  float pad1;
+  vec2 uv;
+};
+
 struct PathState {
   Ray ray;               // next ray to trace
-  vec3 throughput;       // path: product of BSDF weights; direct: the pending BSDF sample's weight
+  vec3 throughput;       // weight of what `ray` finds (path: product of BSDF weights;
+                         // direct: the pending BSDF sample's weight)
   float eta;             // product of relative IORs crossed (Russian roulette, Mitsuba)
   vec3 radiance;         // estimate so far, before the filter weight
   float prev_bsdf_pdf;   // solid-angle pdf of the BSDF sample that produced `ray`
   vec3 prev_p;           // the vertex `ray` leaves from
   uint prev_bsdf_delta;  // whether that BSDF sample came from a delta (or null) lobe
   Rng rng;
-  uint depth;            // path: scattering events so far (Mitsuba's `depth`)
+  uint depth;            // scattering events so far (Mitsuba's `depth`; path)
   uint alive;
   uint stage;            // direct: 0 for the camera ray, k for the k-th sampling round
   float filter_weight;
-  // direct: the first surface hit, where every estimate of the direct integrator starts
-  Frame anchor_frame;
-  vec3 anchor_p;
-  uint anchor_material;
-  vec3 anchor_ng;
-  uint anchor_smooth;
-  vec3 anchor_wi;
-  float pad0;
-  vec2 anchor_uv;
+  ShadingPoint anchor;   // direct: the camera ray's hit
 };
 
 // A shadow ray a backend must trace; if nothing blocks it, the contribution is added.
