@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <memory>
 
 #include "gpu_backend/device_info.h"
 #include "gpu_backend/gpu_error.h"
@@ -57,12 +58,25 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
   timing.pipeline_seconds = seconds_since(phase);
   phase = Clock::now();
 
+  // Two dispatches in flight: while the device renders batch k + 1 the host merges batch k,
+  // which the device copied from `batches` into the readback buffer of k's slot.
   const VkDeviceSize batch_bytes = pixels * sizeof(PixelBatch);
   Buffer batches(device, batch_bytes,
                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  Buffer readback(device, batch_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  struct Slot {
+    std::unique_ptr<AsyncCommands> commands;
+    Buffer readback;
+    uint32_t sample_count = 0;
+    Clock::time_point submitted;
+  };
+  Slot slots[2];
+  for (Slot& slot : slots) {
+    slot.commands = std::make_unique<AsyncCommands>(device);
+    slot.readback =
+        Buffer(device, batch_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+               VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  }
   GpuScene gpu_scene(device, scene.buffers, pipeline.set_layout(), batches);
   timing.build_seconds = seconds_since(phase);
   phase = Clock::now();
@@ -75,17 +89,18 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
   result.backend = "gpu";
   result.device = device.name();
 
-  MomentAccumulator moments(pixels);
-  std::vector<PixelBatch> host_batch(pixels);
-  uint32_t batch_size = 1;
-  uint32_t done = 0;
-  while (done < spp) {
+  auto submit = [&](Slot& slot, uint32_t first_sample, uint32_t count) {
     BatchParams params{};
-    params.first_sample = done;
-    params.sample_count = std::min(batch_size, spp - done);
+    params.first_sample = first_sample;
+    params.sample_count = count;
     params.seed = options.seed;
-    const Clock::time_point dispatch_start = Clock::now();
-    device.submit_and_wait([&](VkCommandBuffer cmd) {
+    slot.sample_count = count;
+    slot.submitted = Clock::now();
+    slot.commands->submit([&](VkCommandBuffer cmd) {
+      // The previous batch's copy must have read `batches` before this trace overwrites it.
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0, nullptr, 0, nullptr,
+                           0, nullptr);
       VkDescriptorSet set = gpu_scene.descriptor_set();
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout(), 0, 1,
                               &set, 0, nullptr);
@@ -99,28 +114,53 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                            VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
       VkBufferCopy region{0, 0, batch_bytes};
-      vkCmdCopyBuffer(cmd, batches.handle(), readback.handle(), 1, &region);
+      vkCmdCopyBuffer(cmd, batches.handle(), slot.readback.handle(), 1, &region);
       barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
       barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                            &barrier, 0, nullptr, 0, nullptr);
     });
-    const double dispatch_seconds = seconds_since(dispatch_start);
-    if (done == 0) {
-      timing.first_dispatch_seconds = dispatch_seconds;
-      timing.first_dispatch_spp = params.sample_count;
-    }
-    std::memcpy(host_batch.data(), readback.mapped(), batch_bytes);
-    moments.merge(host_batch.data(), params.sample_count);
-    for (const PixelBatch& b : host_batch) {
-      result.stats.rays += b.rays;
-      result.stats.rejected_nonfinite += b.rejected;
-    }
-    done += params.sample_count;
-    if (options.progress)
-      options.progress(static_cast<uint64_t>(done) * pixels, static_cast<uint64_t>(spp) * pixels);
+  };
 
-    const double per_sample = dispatch_seconds / params.sample_count;
+  MomentAccumulator moments(pixels);
+  uint32_t batch_size = 1;
+  uint32_t submitted = 0, merged = 0;
+  unsigned next = 0, in_flight = 0, completed = 0;
+  Clock::time_point last_completion = Clock::now();
+  while (merged < spp) {
+    // The first dispatch runs alone: it calibrates the batch size (and lavapipe compiles in it).
+    const unsigned max_in_flight = completed == 0 ? 1 : 2;
+    while (submitted < spp && in_flight < max_in_flight) {
+      const uint32_t count = std::min(batch_size, spp - submitted);
+      submit(slots[(next + in_flight) % 2], submitted, count);
+      submitted += count;
+      ++in_flight;
+    }
+    Slot& slot = slots[next];
+    slot.commands->wait();
+    // Device time of this batch: from when the device could start it to its completion.
+    const Clock::time_point now = Clock::now();
+    const double dispatch_seconds =
+        std::chrono::duration<double>(now - std::max(slot.submitted, last_completion)).count();
+    last_completion = now;
+    if (completed == 0) {
+      timing.first_dispatch_seconds = dispatch_seconds;
+      timing.first_dispatch_spp = slot.sample_count;
+    }
+    const PixelBatch* batch = static_cast<const PixelBatch*>(slot.readback.mapped());
+    moments.merge(batch, slot.sample_count);
+    for (size_t p = 0; p < pixels; ++p) {
+      result.stats.rays += batch[p].rays;
+      result.stats.rejected_nonfinite += batch[p].rejected;
+    }
+    merged += slot.sample_count;
+    next = (next + 1) % 2;
+    --in_flight;
+    ++completed;
+    if (options.progress)
+      options.progress(static_cast<uint64_t>(merged) * pixels, static_cast<uint64_t>(spp) * pixels);
+
+    const double per_sample = dispatch_seconds / slot.sample_count;
     const double fit = per_sample > 0.0 ? kTargetDispatchSeconds / per_sample : kMaxBatch;
     batch_size = static_cast<uint32_t>(std::clamp(fit, 1.0, static_cast<double>(kMaxBatch)));
   }

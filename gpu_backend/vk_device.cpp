@@ -128,6 +128,55 @@ void VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>& r
   check_validation();
 }
 
+AsyncCommands::AsyncCommands(VulkanDevice& device) : device_(device) {
+  VkCommandBufferAllocateInfo alloc{};
+  alloc.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  alloc.commandPool = device.pool_;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  vk_check(vkAllocateCommandBuffers(device.device_, &alloc, &cmd_), "vkAllocateCommandBuffers");
+  VkFenceCreateInfo fence_info{};
+  fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  VkResult r = vkCreateFence(device.device_, &fence_info, nullptr, &fence_);
+  if (r != VK_SUCCESS) {
+    vkFreeCommandBuffers(device.device_, device.pool_, 1, &cmd_);
+    vk_check(r, "vkCreateFence");
+  }
+}
+
+AsyncCommands::~AsyncCommands() {
+  if (pending_) vkWaitForFences(device_.device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+  vkDestroyFence(device_.device_, fence_, nullptr);
+  vkFreeCommandBuffers(device_.device_, device_.pool_, 1, &cmd_);
+}
+
+void AsyncCommands::submit(const std::function<void(VkCommandBuffer)>& record) {
+  wait();
+  vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo begin{};
+  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vk_check(vkBeginCommandBuffer(cmd_, &begin), "vkBeginCommandBuffer");
+  record(cmd_);
+  vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+  device_.check_validation();
+  VkSubmitInfo submit{};
+  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd_;
+  vk_check(vkResetFences(device_.device_, 1, &fence_), "vkResetFences");
+  vk_check(vkQueueSubmit(device_.queue_, 1, &submit, fence_), "vkQueueSubmit");
+  pending_ = true;
+}
+
+void AsyncCommands::wait() {
+  if (pending_) {
+    pending_ = false;
+    vk_check(vkWaitForFences(device_.device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  }
+  device_.check_validation();
+}
+
 uint32_t VulkanDevice::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
                                    VkMemoryPropertyFlags preferred) const {
   for (VkMemoryPropertyFlags wanted : {required | preferred, required})

@@ -48,6 +48,7 @@ class VulkanDevice {
                        VkMemoryPropertyFlags preferred) const;
 
  private:
+  friend class AsyncCommands;
   void destroy();
   VulkanInstance& instance_;
   VkPhysicalDevice physical_;
@@ -60,6 +61,26 @@ class VulkanDevice {
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt_props_{};
   VkPhysicalDeviceAccelerationStructurePropertiesKHR as_props_{};
   VkPhysicalDeviceMemoryProperties memory_{};
+};
+
+// A command buffer with its fence, for device work the host overlaps with its own.
+class AsyncCommands {
+ public:
+  explicit AsyncCommands(VulkanDevice& device);
+  ~AsyncCommands();
+  AsyncCommands(const AsyncCommands&) = delete;
+  AsyncCommands& operator=(const AsyncCommands&) = delete;
+
+  // Waits for the previous submission, then records with `record` and submits.
+  void submit(const std::function<void(VkCommandBuffer)>& record);
+  // Waits for the pending submission, if any, then fails on any validation error.
+  void wait();
+
+ private:
+  VulkanDevice& device_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  bool pending_ = false;
 };
 
 // A buffer with its own memory allocation; move-only.

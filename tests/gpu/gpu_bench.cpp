@@ -66,14 +66,22 @@ int main(int argc, char** argv) {
     tr::GpuTimings t;
     tr::RenderResult r =
         tr::render_with_raygen(scene, options, spirv_raygen, sizeof(spirv_raygen), tuning, &t);
+    // Throughput over all dispatches, and after the first one, which may include the
+    // driver's shader compilation (lavapipe compiles there).
+    const double pixels = double(r.width) * r.height;
+    const double steady_seconds = t.render_seconds - t.first_dispatch_seconds;
+    const double steady_samples = double(r.spp - t.first_dispatch_spp) * pixels;
     std::printf(
-        "%s | %ux%u, %u spp, %s pipeline | setup %.3f s, pipeline %.3f s, AS build %.3f s, render "
-        "%.3f s"
-        " | %.2f Msamples/s, %.2f Mrays/s\n",
+        "%s | %ux%u, %u spp, %s pipeline | setup %.3f s, pipeline %.3f s, AS build %.3f s, "
+        "render %.3f s (first dispatch, %u spp: %.3f s) | %.2f Msamples/s, after the first "
+        "dispatch %.2f Msamples/s, %.2f Mrays/s, %llu rejected\n",
         r.device.c_str(), r.width, r.height, r.spp,
         tuning.specialize ? "specialized" : "all-features", t.setup_seconds, t.pipeline_seconds,
-        t.build_seconds, t.render_seconds, double(r.stats.samples) / t.render_seconds * 1e-6,
-        double(r.stats.rays) / t.render_seconds * 1e-6);
+        t.build_seconds, t.render_seconds, t.first_dispatch_spp, t.first_dispatch_seconds,
+        double(r.stats.samples) / t.render_seconds * 1e-6,
+        steady_seconds > 0.0 ? steady_samples / steady_seconds * 1e-6 : 0.0,
+        double(r.stats.rays) / t.render_seconds * 1e-6,
+        (unsigned long long)r.stats.rejected_nonfinite);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "gpu_bench: %s\n", e.what());

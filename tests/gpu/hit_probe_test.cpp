@@ -90,3 +90,30 @@ TEST(GpuHitProbe, ClosestHitsMatchAnalyticReference) {
 
 }  // namespace
 }  // namespace tr
+
+namespace tr {
+namespace {
+
+// More samples than one dispatch may take (256) force several overlapped dispatches; the
+// probe writes the same value for every sample, so the merge must reproduce it exactly.
+TEST(GpuHitProbe, OverlappedBatchesMergeExactly) {
+  const uint width = 16, height = 12, spp = 300;
+  Scene scene = test::probe_scene(width, height);
+  RenderOptions options;
+  options.spp = 1;
+  RenderResult one = render_with_raygen(scene, options, spirv_hit_probe, sizeof(spirv_hit_probe));
+  options.spp = spp;
+  uint64_t progress_calls = 0;
+  options.progress = [&](uint64_t, uint64_t) { ++progress_calls; };
+  RenderResult many = render_with_raygen(scene, options, spirv_hit_probe, sizeof(spirv_hit_probe));
+  EXPECT_GE(progress_calls, 2u);
+  EXPECT_EQ(many.stats.rays, uint64_t(spp) * width * height);
+  ASSERT_EQ(one.mean.size(), many.mean.size());
+  for (size_t i = 0; i < one.mean.size(); ++i) {
+    ASSERT_EQ(one.mean[i], many.mean[i]) << i;
+    ASSERT_EQ(many.variance[i], 0.0) << i;
+  }
+}
+
+}  // namespace
+}  // namespace tr
