@@ -33,106 +33,141 @@ TR_NAMESPACE_BEGIN
 INLINE uint bsdf_base_flags(Material m, vec2 uv) {
   switch (m.type) {
     case BSDF_DIFFUSE:
-      return diffuse_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_flags(m, uv);
+      break;
     case BSDF_CONDUCTOR:
-      return conductor_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_CONDUCTOR)) return conductor_flags(m, uv);
+      break;
     case BSDF_ROUGHCONDUCTOR:
-      return roughconductor_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_flags(m, uv);
+      break;
     case BSDF_DIELECTRIC:
-      return dielectric_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_DIELECTRIC)) return dielectric_flags(m, uv);
+      break;
     case BSDF_ROUGHDIELECTRIC:
-      return roughdielectric_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_flags(m, uv);
+      break;
     case BSDF_THINDIELECTRIC:
-      return thindielectric_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_THINDIELECTRIC)) return thindielectric_flags(m, uv);
+      break;
     case BSDF_PLASTIC:
-      return plastic_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_flags(m, uv);
+      break;
     case BSDF_ROUGHPLASTIC:
-      return roughplastic_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_flags(m, uv);
+      break;
     case BSDF_PRINCIPLED:
-      return principled_flags(m, uv);
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_flags(m, uv);
+      break;
     default:
-      return 0u;
+      break;
   }
+  return 0u;
 }
 
 // Delta lobes have neither a density nor a value: only BSDFs with smooth lobes appear here.
 INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
-      return diffuse_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_eval(m, uv, wi, wo);
+      break;
     case BSDF_ROUGHCONDUCTOR:
-      return roughconductor_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_eval(m, uv, wi, wo);
+      break;
     case BSDF_ROUGHDIELECTRIC:
-      return roughdielectric_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_eval(m, uv, wi, wo);
+      break;
     case BSDF_PLASTIC:
-      return plastic_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_eval(m, uv, wi, wo);
+      break;
     case BSDF_ROUGHPLASTIC:
-      return roughplastic_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_eval(m, uv, wi, wo);
+      break;
     case BSDF_PRINCIPLED:
-      return principled_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_eval(m, uv, wi, wo);
+      break;
     default:
-      return vec3(0.0f);
+      break;
   }
+  return vec3(0.0f);
 }
 
 INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
-      return diffuse_pdf(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_pdf(m, uv, wi, wo);
+      break;
     case BSDF_ROUGHCONDUCTOR:
-      return roughconductor_pdf(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_pdf(m, uv, wi, wo);
+      break;
     case BSDF_ROUGHDIELECTRIC:
-      return roughdielectric_pdf(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_pdf(m, uv, wi, wo);
+      break;
     case BSDF_PLASTIC:
-      return plastic_pdf(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_pdf(m, uv, wi, wo);
+      break;
     case BSDF_ROUGHPLASTIC:
-      return roughplastic_pdf(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_pdf(m, uv, wi, wo);
+      break;
     case BSDF_PRINCIPLED:
-      return principled_pdf(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_pdf(m, uv, wi, wo);
+      break;
     default:
-      return 0.0f;
+      break;
   }
+  return 0.0f;
 }
 
 INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   switch (m.type) {
     case BSDF_DIFFUSE:
-      return diffuse_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_CONDUCTOR:
-      return conductor_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_CONDUCTOR)) return conductor_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_ROUGHCONDUCTOR:
-      return roughconductor_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_DIELECTRIC:
-      return dielectric_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_DIELECTRIC)) return dielectric_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_ROUGHDIELECTRIC:
-      return roughdielectric_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_THINDIELECTRIC:
-      return thindielectric_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_THINDIELECTRIC)) return thindielectric_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_PLASTIC:
-      return plastic_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_ROUGHPLASTIC:
-      return roughplastic_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_sample(m, uv, wi, u1, u2);
+      break;
     case BSDF_PRINCIPLED:
-      return principled_sample(m, uv, wi, u1, u2);
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_sample(m, uv, wi, u1, u2);
+      break;
     default:
-      return bsdf_sample_failed();
+      break;
   }
+  return bsdf_sample_failed();
 }
 
 // Mask opacity, clipped to [0, 1] as Mitsuba's MaskBSDF::eval_opacity.
 INLINE float bsdf_opacity(Material m, vec2 uv) {
-  if ((m.flags & MATERIAL_MASKED) == 0u) return 1.0f;
-  return clamp(eval_textured_1(m.opacity, uv), 0.0f, 1.0f);
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
+    return clamp(eval_textured_1(m.opacity, uv), 0.0f, 1.0f);
+  return 1.0f;
 }
 
 INLINE uint bsdf_flags(Material m, vec2 uv) {
   uint flags = bsdf_base_flags(m, uv);
-  if ((m.flags & MATERIAL_MASKED) != 0u) flags |= BSDF_NULL;
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u) flags |= BSDF_NULL;
   return flags;
 }
 
 INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
-  if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
   }
@@ -140,7 +175,7 @@ INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
 }
 
 INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
-  if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
   }
@@ -152,9 +187,9 @@ INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
   float wi_z = wi.z;
-  if ((m.flags & MATERIAL_TWOSIDED) != 0u) wi.z = abs(wi.z);
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) wi.z = abs(wi.z);
   BsdfSample s = bsdf_base_sample(m, uv, wi, u1, u2);
-  if ((m.flags & MATERIAL_TWOSIDED) != 0u) s.wo.z = mulsign(s.wo.z, wi_z);
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) s.wo.z = mulsign(s.wo.z, wi_z);
   s.pdf *= opacity;
   return s;
 }

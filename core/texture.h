@@ -40,7 +40,7 @@ INLINE vec2 texture_apply_to_uv(Texture t, vec2 uv) {
 INLINE vec3 eval_texture(uint texture, vec2 uv) {
   Texture t = scene_texture(texture);
   vec2 st = texture_apply_to_uv(t, uv);
-  if (t.type == TEXTURE_CHECKERBOARD) {
+  if (TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD) && t.type == TEXTURE_CHECKERBOARD) {
     // Mitsuba checkerboard: color0 where both fractional parts lie on the same side of 1/2.
     bool mx = st.x - floor(st.x) > 0.5f;
     bool my = st.y - floor(st.y) > 0.5f;
@@ -66,8 +66,9 @@ INLINE vec3 eval_texture(uint texture, vec2 uv) {
 
 // A constant, or the texture lookup when the value is textured.
 INLINE vec3 eval_textured(TexturedValue v, vec2 uv) {
-  if (v.texture == NO_INDEX) return v.value;
-  return eval_texture(v.texture, uv);
+  if ((TR_HAS_TEXTURE(TEXTURE_BITMAP) || TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD)) && v.texture != NO_INDEX)
+    return eval_texture(v.texture, uv);
+  return v.value;
 }
 
 TR_NAMESPACE_END
