@@ -55,7 +55,11 @@ INLINE vec3 fresnel_conductor(float cos_theta_i, vec3 eta, vec3 k) {
   vec3 a = sqrt(max(0.5f * (a2_plus_b2 + t1), vec3(0.0f)));
   vec3 term1 = a2_plus_b2 + vec3(cos2);
   vec3 term2 = 2.0f * cos_theta_i * a;
-  vec3 r_s = (term1 - term2) / (term1 + term2);
+  // Near index matching (eta -> 1, k -> 0) term1 and term2 cancel; rounding must not make
+  // the reflectance negative; both vanish together only at grazing incidence on an
+  // index-matched surface, where the limit of any mismatch is total reflection.
+  vec3 r_s = max((term1 - term2) / max(term1 + term2, vec3(1e-30f)), vec3(0.0f));
+  r_s = mix(r_s, vec3(1.0f), lessThanEqual(term1 + term2, vec3(0.0f)));
   vec3 term3 = a2_plus_b2 * cos2 + vec3(sin4);
   vec3 term4 = term2 * sin2;
   // eta = k = 0 at normal incidence makes the ratio 0/0; its limit is 1.

@@ -354,6 +354,7 @@ std::vector<Material> extreme_materials() {
       ms.push_back(rough_conductor(flags, alpha, alpha, vec3(0.0f), vec3(1.0f)));
       ms.push_back(rough_conductor(flags, alpha, 0.3f, vec3(0.2f), vec3(3.0f)));
       ms.push_back(rough_conductor(flags, alpha, alpha, vec3(0.0f), vec3(0.0f)));
+      ms.push_back(rough_conductor(flags, alpha, 1.0f, vec3(1.0f), vec3(0.0f)));
       for (float eta : kEtas) {
         ms.push_back(rough_dielectric(flags, alpha, alpha, eta));
         ms.push_back(rough_dielectric(flags, alpha, 0.2f, eta));

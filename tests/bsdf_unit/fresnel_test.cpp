@@ -99,6 +99,18 @@ TEST(Fresnel, ConductorMatchesComplexReference) {
   EXPECT_NEAR(fresnel_conductor(1.0f, vec3(n), vec3(kk)).x, expected, 1e-6f);
 }
 
+TEST(Fresnel, ConductorNearIndexMatchIsNonNegative) {
+  for (float cos_i = 0.0f; cos_i <= 1.0f; cos_i += 1.0f / 1024.0f) {
+    vec3 f = fresnel_conductor(cos_i, vec3(1.0f, 1.0001f, 0.9999f), vec3(0.0f, 1e-4f, 0.0f));
+    EXPECT_TRUE(f.x >= 0.0f && f.y >= 0.0f && f.z >= 0.0f) << cos_i;
+    EXPECT_LE(max_component(f), 1.0f) << cos_i;
+    // Away from grazing a nearly index-matched surface reflects next to nothing.
+    if (cos_i >= 0.5f) {
+      EXPECT_LT(max_component(f), 1e-6f) << cos_i;
+    }
+  }
+}
+
 TEST(Fresnel, ConductorDefaultIsPerfectMirror) {
   for (float cos_i : {1.0f, 0.7f, 0.3f, 1e-4f, 0.0f}) {
     vec3 f = fresnel_conductor(cos_i, vec3(0.0f), vec3(1.0f));

@@ -12,8 +12,7 @@ namespace {
 
 TEST(Microfacet, ErfMatchesStd) {
   // The fit's 1.2e-7 plus float rounding.
-  for (float x = -4.0f; x <= 4.0f; x += 0.01f)
-    EXPECT_NEAR(erf_approx(x), std::erf(x), 4e-7f) << x;
+  for (float x = -4.0f; x <= 4.0f; x += 0.01f) EXPECT_NEAR(erf_approx(x), std::erf(x), 4e-7f) << x;
 }
 
 TEST(Microfacet, ErfinvInvertsErf) {
