@@ -182,14 +182,17 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
         auto& tri = g.geometry.triangles;
         tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
         tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-        tri.vertexData.deviceAddress = positions.address();
+        // Each shape's vertices and indices are addressed directly rather than through
+        // primitiveOffset/firstVertex: lavapipe (Mesa 25.0) mis-builds BLASes whose geometries
+        // share one vertex buffer through firstVertex (seen on the Cornell box).
+        tri.vertexData.deviceAddress = positions.address() + VkDeviceAddress(shape.first_vertex) * sizeof(vec4);
         tri.vertexStride = sizeof(vec4);
-        tri.maxVertex = static_cast<uint32_t>(std::max<size_t>(scene.positions.size(), 1) - 1);
+        tri.maxVertex = std::max<uint32_t>(shape.vertex_count, 1) - 1;
         tri.indexType = VK_INDEX_TYPE_UINT32;
-        tri.indexData.deviceAddress = indices.address();
+        tri.indexData.deviceAddress = indices.address() + VkDeviceAddress(shape.first_index) * sizeof(uint32_t);
         range.primitiveCount = shape.triangle_count;
-        range.primitiveOffset = shape.first_index * static_cast<uint32_t>(sizeof(uint32_t));
-        range.firstVertex = shape.first_vertex;
+        range.primitiveOffset = 0;
+        range.firstVertex = 0;
         if (static_cast<size_t>(shape.first_index) + 3u * shape.triangle_count >
                 scene.indices.size() ||
             static_cast<size_t>(shape.first_vertex) + shape.vertex_count > scene.positions.size())
