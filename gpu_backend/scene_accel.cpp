@@ -185,11 +185,13 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
         // Each shape's vertices and indices are addressed directly rather than through
         // primitiveOffset/firstVertex: lavapipe (Mesa 25.0) mis-builds BLASes whose geometries
         // share one vertex buffer through firstVertex (seen on the Cornell box).
-        tri.vertexData.deviceAddress = positions.address() + VkDeviceAddress(shape.first_vertex) * sizeof(vec4);
+        tri.vertexData.deviceAddress =
+            positions.address() + VkDeviceAddress(shape.first_vertex) * sizeof(vec4);
         tri.vertexStride = sizeof(vec4);
         tri.maxVertex = std::max<uint32_t>(shape.vertex_count, 1) - 1;
         tri.indexType = VK_INDEX_TYPE_UINT32;
-        tri.indexData.deviceAddress = indices.address() + VkDeviceAddress(shape.first_index) * sizeof(uint32_t);
+        tri.indexData.deviceAddress =
+            indices.address() + VkDeviceAddress(shape.first_index) * sizeof(uint32_t);
         range.primitiveCount = shape.triangle_count;
         range.primitiveOffset = 0;
         range.firstVertex = 0;
