@@ -56,6 +56,40 @@ INLINE float erfinv_approx(float x) {
   return p * x;
 }
 
+// Arctangent with the same float operations on every backend (library atan differs between
+// the host's libm and GPU drivers by a few ulps, enough to break CPU/GPU lockstep where a
+// direction indexes a texture): Cephes atanf (Moshier, Cephes Math Library, atanf.c),
+// range reduction at tan(3pi/8) and tan(pi/8), then an odd polynomial; ~2 ulp.
+INLINE float atan_portable(float x) {
+  float a = abs(x);
+  float y0 = 0.0f;
+  if (a > 2.414213562373095f) {
+    y0 = 0.5f * PI;
+    a = -1.0f / a;
+  } else if (a > 0.4142135623730950f) {
+    y0 = 0.25f * PI;
+    a = (a - 1.0f) / (a + 1.0f);
+  }
+  float z = a * a;
+  float y = (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * a + a;
+  y += y0;
+  return x < 0.0f ? -y : y;
+}
+
+// atan2(y, x) in (-pi, pi] from atan_portable.
+INLINE float atan2_portable(float y, float x) {
+  if (x == 0.0f) return y > 0.0f ? 0.5f * PI : (y < 0.0f ? -0.5f * PI : 0.0f);
+  float r = atan_portable(y / x);
+  if (x > 0.0f) return r;
+  return y >= 0.0f ? r + PI : r - PI;
+}
+
+// acos(x) = atan2(sqrt(1 - x^2), x), argument clamped to [-1, 1].
+INLINE float acos_portable(float x) {
+  x = clamp(x, -1.0f, 1.0f);
+  return atan2_portable(sqrt(max(0.0f, (1.0f - x) * (1.0f + x))), x);
+}
+
 TR_NAMESPACE_END
 
 #endif

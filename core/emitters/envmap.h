@@ -16,13 +16,15 @@
 #include "core/alias.h"
 #include "core/emitters/emitter_sample.h"
 #include "core/scene_access.h"
+#include "core/special_functions.h"
 #include "core/transform.h"
 
 TR_NAMESPACE_BEGIN
 
+// Portable atan2/acos (core/special_functions.h): the lookup is identical on every backend.
 INLINE vec2 envmap_direction_to_uv(vec3 d) {
-  float u = atan(d.x, -d.z) * INV_TWO_PI;
-  return vec2(u - floor(u), safe_acos(d.y) * INV_PI);
+  float u = atan2_portable(d.x, -d.z) * INV_TWO_PI;
+  return vec2(u - floor(u), acos_portable(d.y) * INV_PI);
 }
 
 INLINE vec3 envmap_uv_to_direction(vec2 uv) {
