@@ -30,7 +30,8 @@ class Arguments {
       used = 0;
     }
     if (used != v.size() || v.empty() || v[0] == '-' || parsed < minimum || parsed > 0xffffffffUL)
-      throw UsageError(name + " expects an integer >= " + std::to_string(minimum) + ", got '" + v + "'");
+      throw UsageError(name + " expects an integer >= " + std::to_string(minimum) + ", got '" + v +
+                       "'");
     return unsigned(parsed);
   }
 

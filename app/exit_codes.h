@@ -5,12 +5,12 @@ namespace tr {
 
 enum ExitCode : int {
   kExitOk = 0,
-  kExitFailed = 1,          // a check failed (compare/validate verdict: fail)
-  kExitUsage = 2,           // bad command-line arguments
-  kExitBadScene = 3,        // the scene file (or a file it names) is invalid
-  kExitNoBackend = 4,       // the requested backend/device is unavailable
-  kExitOutput = 5,          // an output file could not be written
-  kExitInternal = 6,        // an unexpected internal error
+  kExitFailed = 1,     // a check failed (compare/validate verdict: fail)
+  kExitUsage = 2,      // bad command-line arguments
+  kExitBadScene = 3,   // the scene file (or a file it names) is invalid
+  kExitNoBackend = 4,  // the requested backend/device is unavailable
+  kExitOutput = 5,     // an output file could not be written
+  kExitInternal = 6,   // an unexpected internal error
 };
 
 }  // namespace tr

@@ -26,8 +26,8 @@ void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
   int filled = int(fraction * width);
   std::string bar(size_t(filled), '#');
   bar.resize(width, '.');
-  std::fprintf(stderr, "\r[%s] %5.1f%%  %8.3f Msamples/s  ETA %02d:%02d ", bar.c_str(), 100.0 * fraction,
-               rate * 1e-6, int(eta) / 60, int(eta) % 60);
+  std::fprintf(stderr, "\r[%s] %5.1f%%  %8.3f Msamples/s  ETA %02d:%02d ", bar.c_str(),
+               100.0 * fraction, rate * 1e-6, int(eta) / 60, int(eta) % 60);
   std::fflush(stderr);
 }
 

@@ -49,7 +49,8 @@ RenderArgs parse(int argc, char** argv) {
     } else if (arg == "-D") {
       std::string kv = args.value(arg);
       size_t eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) throw UsageError("-D expects NAME=VALUE, got '" + kv + "'");
+      if (eq == std::string::npos || eq == 0)
+        throw UsageError("-D expects NAME=VALUE, got '" + kv + "'");
       a.load.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
     } else if (arg == "-a") {
       a.load.search_paths.push_back(args.value(arg));
@@ -83,16 +84,19 @@ void check_output_directory(const std::string& path) {
   std::filesystem::path dir = std::filesystem::absolute(path).parent_path();
   if (!std::filesystem::is_directory(dir))
     throw ImageError(path + ": output directory " + dir.string() + " does not exist");
-  if (access(dir.c_str(), W_OK) != 0) throw ImageError(path + ": output directory " + dir.string() + " is not writable");
+  if (access(dir.c_str(), W_OK) != 0)
+    throw ImageError(path + ": output directory " + dir.string() + " is not writable");
 }
 
 void print_summary(const RenderResult& r, const OutputPaths& paths) {
   const RenderStats& s = r.stats;
   double sps = s.seconds > 0 ? double(s.samples) / s.seconds : 0.0;
   double rps = s.seconds > 0 ? double(s.rays) / s.seconds : 0.0;
-  std::printf("twinray: %ux%u, %u spp, %.3f s, %.3f Msamples/s, %.3f Mrays/s, %llu NaN/Inf samples rejected\n",
-              r.width, r.height, r.spp, s.seconds, sps * 1e-6, rps * 1e-6,
-              static_cast<unsigned long long>(s.rejected_nonfinite));
+  std::printf(
+      "twinray: %ux%u, %u spp, %.3f s, %.3f Msamples/s, %.3f Mrays/s, %llu NaN/Inf samples "
+      "rejected\n",
+      r.width, r.height, r.spp, s.seconds, sps * 1e-6, rps * 1e-6,
+      static_cast<unsigned long long>(s.rejected_nonfinite));
   std::printf("twinray: backend %s (%s); wrote %s, %s, %s\n", r.backend.c_str(), r.device.c_str(),
               paths.image.c_str(), paths.variance.c_str(), paths.preview.c_str());
 }
@@ -118,11 +122,15 @@ int render_command(int argc, char** argv) {
     check_output_directory(paths.image);
     Scene scene = load_scene(a.scene, a.load);
     ProgressBar bar;
-    a.render.progress = [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); };
+    a.render.progress = [&bar](std::uint64_t done, std::uint64_t total) {
+      bar.update(done, total);
+    };
     RenderResult result = run_backend(a.backend, scene, a.render);
     bar.finish();
-    write_result(result, paths, {{"twinray:scene", a.scene}, {"twinray:integrator", scene.integrator_name},
-                                 {"twinray:version", TWINRAY_VERSION}});
+    write_result(result, paths,
+                 {{"twinray:scene", a.scene},
+                  {"twinray:integrator", scene.integrator_name},
+                  {"twinray:version", TWINRAY_VERSION}});
     print_summary(result, paths);
     return kExitOk;
   } catch (const SceneError& e) {

@@ -7,12 +7,14 @@
 
 namespace tr {
 
-RenderResult run_backend(const std::string& backend, const Scene& scene, const RenderOptions& options) {
+RenderResult run_backend(const std::string& backend, const Scene& scene,
+                         const RenderOptions& options) {
   if (backend == "cpu") return render_cpu(scene, options);
 #ifdef TWINRAY_HAS_GPU
   return render_gpu(scene, options);
 #else
-  throw BackendUnavailable("this twinray was built without the GPU backend (TWINRAY_BUILD_GPU=OFF); use --backend cpu");
+  throw BackendUnavailable(
+      "this twinray was built without the GPU backend (TWINRAY_BUILD_GPU=OFF); use --backend cpu");
 #endif
 }
 

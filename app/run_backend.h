@@ -8,6 +8,7 @@
 namespace tr {
 
 // Renders with the named backend ("cpu" or "gpu"); throws BackendUnavailable when it cannot.
-RenderResult run_backend(const std::string& backend, const Scene& scene, const RenderOptions& options);
+RenderResult run_backend(const std::string& backend, const Scene& scene,
+                         const RenderOptions& options);
 
 }  // namespace tr

@@ -63,7 +63,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_render: --scene=FILE is required\n");
     return 2;
   }
-  benchmark::RegisterBenchmark("render", BM_Render)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(3);
+  benchmark::RegisterBenchmark("render", BM_Render)
+      ->UseManualTime()
+      ->Unit(benchmark::kSecond)
+      ->Iterations(3);
   int rest_argc = int(rest.size());
   benchmark::Initialize(&rest_argc, rest.data());
   benchmark::RunSpecifiedBenchmarks();

@@ -162,7 +162,8 @@ INLINE float bsdf_opacity(Material m, vec2 uv) {
 
 INLINE uint bsdf_flags(Material m, vec2 uv) {
   uint flags = bsdf_base_flags(m, uv);
-  if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u) flags |= BSDF_NULL;
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
+    flags |= BSDF_NULL;
   return flags;
 }
 
@@ -187,9 +188,11 @@ INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
   float wi_z = wi.z;
-  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) wi.z = abs(wi.z);
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
+    wi.z = abs(wi.z);
   BsdfSample s = bsdf_base_sample(m, uv, wi, u1, u2);
-  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) s.wo.z = mulsign(s.wo.z, wi_z);
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
+    s.wo.z = mulsign(s.wo.z, wi_z);
   s.pdf *= opacity;
   return s;
 }

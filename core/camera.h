@@ -25,7 +25,8 @@ INLINE float sample_gaussian_filter_1d(float u, float sigma, float r, OUT(float)
   float x = clamp(sigma * sqrt(2.0f) * erfinv_approx(e * (2.0f * u - 1.0f)), -r, r);
   float gauss_integral = sigma * sqrt(2.0f * PI) * e;  // of exp(-x^2 / 2 sigma^2) over [-r, r]
   float filter_integral = gauss_integral - 2.0f * r * exp(-0.5f * r * r / (sigma * sigma));
-  weight = (1.0f - exp(-0.5f * (r * r - x * x) / (sigma * sigma))) * gauss_integral / filter_integral;
+  weight =
+      (1.0f - exp(-0.5f * (r * r - x * x) / (sigma * sigma))) * gauss_integral / filter_integral;
   return x;
 }
 
@@ -52,7 +53,8 @@ INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) weigh
 // thin lens's aperture sample.
 INLINE Ray camera_ray(Camera c, vec2 film, vec2 u_lens) {
   vec2 s = film / vec2(float(c.width), float(c.height)) - c.principal_point;
-  vec3 d = normalize(vec3((1.0f - 2.0f * s.x) * c.tan_half_fov.x, (1.0f - 2.0f * s.y) * c.tan_half_fov.y, 1.0f));
+  vec3 d = normalize(
+      vec3((1.0f - 2.0f * s.x) * c.tan_half_fov.x, (1.0f - 2.0f * s.y) * c.tan_half_fov.y, 1.0f));
   vec3 o = vec3(0.0f);
   if (c.type == SENSOR_THINLENS) {
     // Mitsuba thinlens: a point on the aperture disk, aimed at the point of the plane of focus

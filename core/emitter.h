@@ -70,8 +70,10 @@ INLINE float pdf_environment(vec3 d) {
   if (g.environment == NO_INDEX) return 0.0f;
   Emitter e = scene_emitter(g.environment);
   float pmf = alias_pmf(g.emitter_alias_offset, g.environment);
-  if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) return pmf * pdf_constant_emitter();
-  if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP) return pmf * pdf_envmap_emitter(e, d);
+  if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT)
+    return pmf * pdf_constant_emitter();
+  if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP)
+    return pmf * pdf_envmap_emitter(e, d);
   return 0.0f;
 }
 

@@ -123,7 +123,8 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   }
   if (any(notEqual(le, vec3(0.0f))) && any(notEqual(s.throughput, vec3(0.0f)))) {
     if (s.prev_bsdf_delta != 0u) em_pdf = 0.0f;
-    float weight = first ? 1.0f : power_heuristic(s.prev_bsdf_pdf * frac_bsdf, em_pdf * frac_emitter) / n_bsdf;
+    float weight =
+        first ? 1.0f : power_heuristic(s.prev_bsdf_pdf * frac_bsdf, em_pdf * frac_emitter) / n_bsdf;
     s.radiance += s.throughput * le * weight;
   }
 
@@ -162,7 +163,8 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
       vec3 wo = frame_to_local(sp.frame, es.d);
       vec3 f = bsdf_eval(m, sp.uv, sp.wi, wo);
       float mis = es.delta != 0u ? 1.0f
-                                 : power_heuristic(es.pdf * frac_emitter, bsdf_pdf(m, sp.uv, sp.wi, wo) * frac_bsdf);
+                                 : power_heuristic(es.pdf * frac_emitter,
+                                                   bsdf_pdf(m, sp.uv, sp.wi, wo) * frac_bsdf);
       sr.contribution = base * f * es.weight * (mis / n_emitter);
       if (any(notEqual(sr.contribution, vec3(0.0f)))) {
         sr.enabled = 1u;
@@ -192,7 +194,9 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   return sr;
 }
 
-INLINE void integrator_add_unoccluded(INOUT(PathState) s, ShadowRay sr) { s.radiance += sr.contribution; }
+INLINE void integrator_add_unoccluded(INOUT(PathState) s, ShadowRay sr) {
+  s.radiance += sr.contribution;
+}
 
 INLINE vec3 integrator_result(PathState s) { return s.radiance * s.filter_weight; }
 

@@ -15,15 +15,15 @@
 TR_NAMESPACE_BEGIN
 
 struct SurfaceInteraction {
-  vec3 p;         // world-space position
-  float t;        // ray parameter
-  vec3 ng;        // geometric normal (unit; winding / flip_normals orientation, as Mitsuba)
+  vec3 p;   // world-space position
+  float t;  // ray parameter
+  vec3 ng;  // geometric normal (unit; winding / flip_normals orientation, as Mitsuba)
   uint shape;
-  Frame frame;    // shading frame, frame.n = shading normal
-  vec3 wi;        // direction towards the ray origin, in the shading frame
+  Frame frame;  // shading frame, frame.n = shading normal
+  vec3 wi;      // direction towards the ray origin, in the shading frame
   uint material;
   vec2 uv;
-  uint emitter;   // NO_INDEX unless the shape is an area emitter
+  uint emitter;  // NO_INDEX unless the shape is an area emitter
   uint instance;
 };
 
@@ -56,9 +56,12 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
     uint i0 = shape.first_vertex + scene_index(base);
     uint i1 = shape.first_vertex + scene_index(base + 1u);
     uint i2 = shape.first_vertex + scene_index(base + 2u);
-    vec3 p0 = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i0));
-    vec3 p1 = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i1));
-    vec3 p2 = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i2));
+    vec3 p0 =
+        transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i0));
+    vec3 p1 =
+        transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i1));
+    vec3 p2 =
+        transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i2));
     float b1 = hit.barycentrics.x;
     float b2 = hit.barycentrics.y;
     float b0 = 1.0f - b1 - b2;
@@ -87,7 +90,8 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
   } else {
     vec3 p_inst = ray.o + hit.t * ray.d;
     p_inst = transform_point(inst.to_object[0], inst.to_object[1], inst.to_object[2], p_inst);
-    vec3 local = transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], p_inst);
+    vec3 local =
+        transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], p_inst);
     vec3 n_local;
     vec3 dp_du_local;
     if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE) {

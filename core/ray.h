@@ -56,7 +56,8 @@ INLINE Ray spawn_ray_to(vec3 p, vec3 ng, vec3 target, vec3 n_target) {
   vec3 n = dot(d0, ng) >= 0.0f ? ng : -ng;
   vec3 o = offset_ray_origin(p, n);
   vec3 t = target;
-  if (dot(n_target, n_target) > 0.0f) t = offset_ray_origin(target, dot(d0, n_target) > 0.0f ? -n_target : n_target);
+  if (dot(n_target, n_target) > 0.0f)
+    t = offset_ray_origin(target, dot(d0, n_target) > 0.0f ? -n_target : n_target);
   vec3 d = t - o;
   float dist = length(d);
   return make_ray(o, d / dist, dist * (1.0f - SHADOW_EPSILON));

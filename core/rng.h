@@ -14,7 +14,7 @@
 TR_NAMESPACE_BEGIN
 
 struct Rng {
-  uint pixel;      // linear pixel index
+  uint pixel;         // linear pixel index
   uint sample_index;  // sample index within the pixel
   uint seed;
   uint dimension;  // next counter value

@@ -30,9 +30,9 @@ struct Texture {
   uint height;
   uint pad0;
   uint pad1;
-  vec4 color0;      // checkerboard color0
-  vec4 color1;      // checkerboard color1
-  vec4 to_uv[2];    // rows of the 2x3 affine uv transform (Mitsuba `to_uv`)
+  vec4 color0;    // checkerboard color0
+  vec4 color1;    // checkerboard color1
+  vec4 to_uv[2];  // rows of the 2x3 affine uv transform (Mitsuba `to_uv`)
 };
 
 // A BSDF parameter that is either a constant or a texture lookup (texture != NO_INDEX).
@@ -64,10 +64,10 @@ const uint MATERIAL_NONLINEAR = 16u;      // plastic / roughplastic `nonlinear`
 const uint MATERIAL_PARAM_COUNT = 12u;
 
 struct Material {
-  uint type;   // BSDF_*
-  uint flags;  // MATERIAL_*
-  float eta;   // relative IOR int_ior / ext_ior (dielectrics, plastics, principled)
-  float extra; // per-type scalar (e.g. principled sampling rates), see core/bsdf/*.h
+  uint type;              // BSDF_*
+  uint flags;             // MATERIAL_*
+  float eta;              // relative IOR int_ior / ext_ior (dielectrics, plastics, principled)
+  float extra;            // per-type scalar (e.g. principled sampling rates), see core/bsdf/*.h
   TexturedValue opacity;  // mask opacity (only with MATERIAL_MASKED)
   TexturedValue param[MATERIAL_PARAM_COUNT];
 };
@@ -79,22 +79,22 @@ const uint SHAPE_DISK = 2u;      // unit disk in the z=0 plane, normal +z, throu
 const uint SHAPE_CYLINDER = 3u;  // radius 1, z in [0,1], no caps, through to_world
 
 // Shape.flags
-const uint SHAPE_HAS_NORMALS = 1u;  // per-vertex shading normals present
-const uint SHAPE_HAS_UVS = 2u;      // per-vertex uvs present
-const uint SHAPE_FLIP_NORMALS = 4u; // Mitsuba `flip_normals`
+const uint SHAPE_HAS_NORMALS = 1u;   // per-vertex shading normals present
+const uint SHAPE_HAS_UVS = 2u;       // per-vertex uvs present
+const uint SHAPE_FLIP_NORMALS = 4u;  // Mitsuba `flip_normals`
 
 struct Shape {
-  uint type;      // SHAPE_*
-  uint flags;     // SHAPE_*
-  uint material;  // index into materials
-  uint emitter;   // index into emitters, or NO_INDEX
+  uint type;            // SHAPE_*
+  uint flags;           // SHAPE_*
+  uint material;        // index into materials
+  uint emitter;         // index into emitters, or NO_INDEX
   uint first_index;     // meshes: offset into the index buffer (3 indices per triangle)
   uint triangle_count;  // meshes: number of triangles
   uint first_vertex;    // meshes: added to every index
   uint vertex_count;
-  vec4 to_world[3];     // analytic shapes: object->world (mesh vertices are pre-transformed)
-  vec4 to_object[3];    // analytic shapes: world->object
-  float area;           // world-space surface area
+  vec4 to_world[3];   // analytic shapes: object->world (mesh vertices are pre-transformed)
+  vec4 to_object[3];  // analytic shapes: world->object
+  float area;         // world-space surface area
   uint pad0;
   uint pad1;
   uint pad2;
@@ -119,18 +119,18 @@ const uint EMITTER_CONSTANT = 3u;
 const uint EMITTER_ENVMAP = 4u;
 
 struct Emitter {
-  uint type;           // EMITTER_*
-  uint shape;          // area: the emitting shape
-  uint texture;        // envmap: its bitmap texture
-  uint alias_offset;   // area meshes: per-triangle alias table; envmap: per-texel alias table
-  vec3 radiance;       // area/constant: radiance; point: intensity; directional: irradiance;
-  float scale;         // envmap: `scale`
-  vec3 position;       // point: position
+  uint type;          // EMITTER_*
+  uint shape;         // area: the emitting shape
+  uint texture;       // envmap: its bitmap texture
+  uint alias_offset;  // area meshes: per-triangle alias table; envmap: per-texel alias table
+  vec3 radiance;      // area/constant: radiance; point: intensity; directional: irradiance;
+  float scale;        // envmap: `scale`
+  vec3 position;      // point: position
   uint alias_count;
-  vec3 direction;      // directional: unit direction of travel
+  vec3 direction;  // directional: unit direction of travel
   float pad0;
-  vec4 to_world[3];    // envmap: rotation local->world
-  vec4 to_local[3];    // envmap: rotation world->local
+  vec4 to_world[3];  // envmap: rotation local->world
+  vec4 to_local[3];  // envmap: rotation world->local
 };
 
 // Walker/Vose alias table entry (Vose 1991): pick bin i = floor(u * n); keep it with
@@ -153,13 +153,13 @@ const uint INTEGRATOR_PATH = 0u;
 const uint INTEGRATOR_DIRECT = 1u;
 
 struct Camera {
-  vec4 to_world[3];       // camera->world; camera looks along +z, +x left, +y up (Mitsuba)
-  uint type;              // SENSOR_*
-  uint width;             // film size in pixels
+  vec4 to_world[3];  // camera->world; camera looks along +z, +x left, +y up (Mitsuba)
+  uint type;         // SENSOR_*
+  uint width;        // film size in pixels
   uint height;
-  uint rfilter;           // RFILTER_*
-  vec2 tan_half_fov;      // tan of half the field of view along x and y
-  vec2 principal_point;   // Mitsuba principal_point_offset_{x,y}, in fractions of the film
+  uint rfilter;          // RFILTER_*
+  vec2 tan_half_fov;     // tan of half the field of view along x and y
+  vec2 principal_point;  // Mitsuba principal_point_offset_{x,y}, in fractions of the film
   float near_clip;
   float far_clip;
   float aperture_radius;  // thinlens
@@ -171,12 +171,12 @@ struct Camera {
 };
 
 struct Integrator {
-  uint type;              // INTEGRATOR_*
-  int max_depth;          // -1: unbounded (Mitsuba semantics)
+  uint type;      // INTEGRATOR_*
+  int max_depth;  // -1: unbounded (Mitsuba semantics)
   int rr_depth;
   uint hide_emitters;
-  uint emitter_samples;   // direct
-  uint bsdf_samples;      // direct
+  uint emitter_samples;  // direct
+  uint bsdf_samples;     // direct
   uint pad0;
   uint pad1;
 };
@@ -188,7 +188,7 @@ struct SceneGlobals {
   uint emitter_alias_offset;  // power-proportional emitter selection table
   uint environment;           // the constant/envmap emitter, or NO_INDEX
   uint instance_count;
-  vec3 bounds_center;         // bounding sphere of the scene geometry
+  vec3 bounds_center;  // bounding sphere of the scene geometry
   float bounds_radius;
 };
 

@@ -71,7 +71,10 @@ INLINE float atan_portable(float x) {
     a = (a - 1.0f) / (a + 1.0f);
   }
   float z = a * a;
-  float y = (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z - 3.33329491539e-1f) * z * a + a;
+  float y = (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z -
+             3.33329491539e-1f) *
+                z * a +
+            a;
   y += y0;
   return x < 0.0f ? -y : y;
 }

@@ -66,7 +66,8 @@ INLINE vec3 eval_texture(uint texture, vec2 uv) {
 
 // A constant, or the texture lookup when the value is textured.
 INLINE vec3 eval_textured(TexturedValue v, vec2 uv) {
-  if ((TR_HAS_TEXTURE(TEXTURE_BITMAP) || TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD)) && v.texture != NO_INDEX)
+  if ((TR_HAS_TEXTURE(TEXTURE_BITMAP) || TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD)) &&
+      v.texture != NO_INDEX)
     return eval_texture(v.texture, uv);
   return v.value;
 }

@@ -23,7 +23,9 @@ INLINE vec2 square_to_uniform_disk_concentric(vec2 u) {
   }
   return r * vec2(cos(theta), sin(theta));
 }
-INLINE float square_to_uniform_disk_concentric_pdf(vec2 p) { return dot(p, p) <= 1.0f ? INV_PI : 0.0f; }
+INLINE float square_to_uniform_disk_concentric_pdf(vec2 p) {
+  return dot(p, p) <= 1.0f ? INV_PI : 0.0f;
+}
 
 // Malley's method, pbrt-v4 §A.5.3: pdf = cos(theta) / pi.
 INLINE vec3 square_to_cosine_hemisphere(vec2 u) {

@@ -16,7 +16,8 @@ using UserShape = EmbreeScene::UserShape;
 // the constructor turns a recorded error into an exception after each commit.
 void error_callback(void* user, RTCError code, const char* message) {
   auto* last = static_cast<std::string*>(user);
-  if (last->empty()) *last = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+  if (last->empty())
+    *last = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
 }
 
 void bounds_callback(const RTCBoundsFunctionArguments* args) {
@@ -139,12 +140,12 @@ void EmbreeScene::add_shapes(RTCScene scene, uint first_shape, uint shape_count)
     RTCGeometry g;
     if (shape.type == SHAPE_MESH) {
       g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                 buffers_.positions.data(), size_t(shape.first_vertex) * sizeof(vec4),
-                                 sizeof(vec4), shape.vertex_count);
-      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, buffers_.indices.data(),
-                                 size_t(shape.first_index) * sizeof(uint), 3 * sizeof(uint),
-                                 shape.triangle_count);
+      rtcSetSharedGeometryBuffer(
+          g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, buffers_.positions.data(),
+          size_t(shape.first_vertex) * sizeof(vec4), sizeof(vec4), shape.vertex_count);
+      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                 buffers_.indices.data(), size_t(shape.first_index) * sizeof(uint),
+                                 3 * sizeof(uint), shape.triangle_count);
     } else {
       auto user = std::make_unique<UserShape>();
       user->shape = s;

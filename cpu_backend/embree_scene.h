@@ -49,8 +49,8 @@ class EmbreeScene {
   RTCScene root_ = nullptr;
   std::vector<Group> groups_;
   std::vector<std::unique_ptr<UserShape>> user_shapes_;
-  std::string error_;  // first error Embree reported
-  std::vector<uint> root_geometry_shape_;  // root geometry ID -> shape (NO_INDEX: instance)
+  std::string error_;                         // first error Embree reported
+  std::vector<uint> root_geometry_shape_;     // root geometry ID -> shape (NO_INDEX: instance)
   std::vector<uint> root_geometry_instance_;  // root geometry ID -> Instance record
 };
 

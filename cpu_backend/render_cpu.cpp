@@ -33,7 +33,8 @@ struct ThreadCounts {
 
 // All samples of one pixel, in order, with Welford's running mean and M2 in double
 // (Welford 1962; Chan, Golub & LeVeque 1979 eq. 1.5).
-PixelMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint seed, ThreadCounts& counts) {
+PixelMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint seed,
+                          ThreadCounts& counts) {
   PixelMoments m;
   for (uint i = 0; i < spp; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
@@ -117,7 +118,8 @@ RenderResult render_cpu(const Scene& scene, const RenderOptions& options) {
     result.stats.rejected_nonfinite += c.rejected;
   });
   result.stats.samples = total;
-  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.progress) options.progress(total, total);
   return result;
 }

@@ -20,7 +20,7 @@ struct BackendUnavailable : std::runtime_error {
 using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
 
 struct RenderOptions {
-  std::uint32_t spp = 0;      // samples per pixel (0: the scene's sampler sample_count)
+  std::uint32_t spp = 0;  // samples per pixel (0: the scene's sampler sample_count)
   std::uint32_t seed = 0;
   std::uint32_t threads = 0;  // CPU worker threads (0: all cores)
   std::string device;         // GPU device index or name substring ("" = first usable)
@@ -29,9 +29,9 @@ struct RenderOptions {
 
 struct RenderStats {
   double seconds = 0.0;
-  std::uint64_t samples = 0;            // camera paths traced
-  std::uint64_t rays = 0;               // closest-hit + shadow rays
-  std::uint64_t rejected_nonfinite = 0; // samples whose radiance was NaN/Inf, counted as 0
+  std::uint64_t samples = 0;             // camera paths traced
+  std::uint64_t rays = 0;                // closest-hit + shadow rays
+  std::uint64_t rejected_nonfinite = 0;  // samples whose radiance was NaN/Inf, counted as 0
 };
 
 // Per pixel, per channel (RGB, row-major, top row first): the sample mean and the unbiased

@@ -245,7 +245,8 @@ double SceneBuilder::textured_mean(const TexturedValue& v) const {
   if (v.texture == NO_INDEX) return (double(v.value.x) + v.value.y + v.value.z) / 3.0;
   const Texture& t = b_.textures[v.texture];
   if (t.type == TEXTURE_CHECKERBOARD)
-    return (double(t.color0.x) + t.color0.y + t.color0.z + t.color1.x + t.color1.y + t.color1.z) / 6.0;
+    return (double(t.color0.x) + t.color0.y + t.color0.z + t.color1.x + t.color1.y + t.color1.z) /
+           6.0;
   double sum = 0.0;
   size_t count = size_t(t.width) * t.height;
   for (size_t i = 0; i < count; ++i) {

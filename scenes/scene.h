@@ -12,22 +12,22 @@
 
 namespace tr {
 
-static_assert(sizeof(Texture) % 16 == 0 && sizeof(Material) % 16 == 0 &&
-                  sizeof(Shape) % 16 == 0 && sizeof(Instance) % 16 == 0 &&
-                  sizeof(Emitter) % 16 == 0 && sizeof(AliasEntry) % 16 == 0 &&
-                  sizeof(Camera) % 16 == 0 && sizeof(SceneGlobals) % 16 == 0,
+static_assert(sizeof(Texture) % 16 == 0 && sizeof(Material) % 16 == 0 && sizeof(Shape) % 16 == 0 &&
+                  sizeof(Instance) % 16 == 0 && sizeof(Emitter) % 16 == 0 &&
+                  sizeof(AliasEntry) % 16 == 0 && sizeof(Camera) % 16 == 0 &&
+                  sizeof(SceneGlobals) % 16 == 0,
               "shared records must keep std430 layout");
 
 struct SceneBuffers {
   SceneGlobals globals{};
   std::vector<Material> materials;
   std::vector<Texture> textures;
-  std::vector<vec4> texels;        // linear RGBA, all bitmaps back to back
+  std::vector<vec4> texels;  // linear RGBA, all bitmaps back to back
   std::vector<Emitter> emitters;
-  std::vector<AliasEntry> alias;   // every alias table back to back
+  std::vector<AliasEntry> alias;  // every alias table back to back
   std::vector<Shape> shapes;
-  std::vector<Instance> instances; // instance 0: the top level, identity transform
-  std::vector<vec4> positions;     // world space (object space inside shapegroups)
+  std::vector<Instance> instances;  // instance 0: the top level, identity transform
+  std::vector<vec4> positions;      // world space (object space inside shapegroups)
   std::vector<vec4> normals;
   std::vector<vec2> uvs;
   std::vector<uint> indices;
@@ -35,9 +35,9 @@ struct SceneBuffers {
 
 struct Scene {
   SceneBuffers buffers;
-  std::string path;       // the XML file it was loaded from
-  uint spp = 1;           // sampler `sample_count`
-  uint seed = 0;          // sampler `seed`
+  std::string path;             // the XML file it was loaded from
+  uint spp = 1;                 // sampler `sample_count`
+  uint seed = 0;                // sampler `seed`
   std::string integrator_name;  // e.g. "path", "moment(path)"
 };
 

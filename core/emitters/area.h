@@ -19,8 +19,12 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE vec3 sphere_center(Shape s) { return vec3(s.to_world[0].w, s.to_world[1].w, s.to_world[2].w); }
-INLINE float sphere_radius(Shape s) { return length(vec3(s.to_world[0].x, s.to_world[1].x, s.to_world[2].x)); }
+INLINE vec3 sphere_center(Shape s) {
+  return vec3(s.to_world[0].w, s.to_world[1].w, s.to_world[2].w);
+}
+INLINE float sphere_radius(Shape s) {
+  return length(vec3(s.to_world[0].x, s.to_world[1].x, s.to_world[2].x));
+}
 
 // sin^2(1.5 degrees): below it, cone quantities use Taylor expansions (pbrt-v4 §6.2.4).
 const float SMALL_CONE_SIN2 = 0.00068523f;
@@ -33,7 +37,8 @@ INLINE bool sphere_cone(Shape s, vec3 p, OUT(float) one_minus_cos_max) {
   float dist2 = dot(c - p, c - p);
   if (dist2 <= r * r * 1.0001f) return false;
   float sin2_max = r * r / dist2;
-  one_minus_cos_max = sin2_max < SMALL_CONE_SIN2 ? 0.5f * sin2_max : 1.0f - safe_sqrt(1.0f - sin2_max);
+  one_minus_cos_max =
+      sin2_max < SMALL_CONE_SIN2 ? 0.5f * sin2_max : 1.0f - safe_sqrt(1.0f - sin2_max);
   return true;
 }
 
@@ -83,7 +88,8 @@ INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) 
   EmitterSample s = emitter_sample_failed();
   Shape shape = scene_shape(e.shape);
   float one_minus_cos_max;
-  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max)) {
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE &&
+      sphere_cone(shape, ref_p, one_minus_cos_max)) {
     // pbrt-v4 §6.2.4: sample cos(theta) in the cone, then the sphere point whose direction
     // from the centre makes angle alpha with the axis (law of cosines).
     vec2 u = rng_next_2d(rng);
@@ -140,7 +146,8 @@ INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) 
 INLINE float pdf_area_emitter(Emitter e, vec3 ref_p, vec3 p, vec3 n) {
   Shape shape = scene_shape(e.shape);
   float one_minus_cos_max;
-  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE && sphere_cone(shape, ref_p, one_minus_cos_max))
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE &&
+      sphere_cone(shape, ref_p, one_minus_cos_max))
     return 1.0f / (2.0f * PI * one_minus_cos_max);
   vec3 v = p - ref_p;
   float dist2 = dot(v, v);

@@ -12,12 +12,12 @@ TR_NAMESPACE_BEGIN
 // A surface point where light is sampled: the path's current vertex, or the direct
 // integrator's first hit, which all of its sampling rounds share.
 struct ShadingPoint {
-  Frame frame;    // shading frame
+  Frame frame;  // shading frame
   vec3 p;
   uint material;
-  vec3 ng;        // geometric normal
+  vec3 ng;  // geometric normal
   uint pad0;
-  vec3 wi;        // towards the previous vertex, local to frame
+  vec3 wi;  // towards the previous vertex, local to frame
   float pad1;
   vec2 uv;
 };
@@ -32,11 +32,11 @@ struct PathState {
   vec3 prev_p;           // the vertex `ray` leaves from
   uint prev_bsdf_delta;  // whether that BSDF sample came from a delta (or null) lobe
   Rng rng;
-  uint depth;            // scattering events so far (Mitsuba's `depth`; path)
+  uint depth;  // scattering events so far (Mitsuba's `depth`; path)
   uint alive;
-  uint stage;            // direct: 0 for the camera ray, k for the k-th sampling round
+  uint stage;  // direct: 0 for the camera ray, k for the k-th sampling round
   float filter_weight;
-  ShadingPoint anchor;   // direct: the camera ray's hit
+  ShadingPoint anchor;  // direct: the camera ray's hit
 };
 
 // A shadow ray a backend must trace; if nothing blocks it, the contribution is added.

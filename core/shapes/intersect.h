@@ -16,8 +16,10 @@ INLINE bool intersect_shape(uint shape, vec3 o, vec3 d, float tmin, float tmax, 
   Shape s = scene_shape(shape);
   vec3 oo = transform_point(s.to_object[0], s.to_object[1], s.to_object[2], o);
   vec3 od = transform_vector(s.to_object[0], s.to_object[1], s.to_object[2], d);
-  if (TR_HAS_SHAPE(SHAPE_SPHERE) && s.type == SHAPE_SPHERE) return intersect_unit_sphere(oo, od, tmin, tmax, t);
-  if (TR_HAS_SHAPE(SHAPE_DISK) && s.type == SHAPE_DISK) return intersect_unit_disk(oo, od, tmin, tmax, t);
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && s.type == SHAPE_SPHERE)
+    return intersect_unit_sphere(oo, od, tmin, tmax, t);
+  if (TR_HAS_SHAPE(SHAPE_DISK) && s.type == SHAPE_DISK)
+    return intersect_unit_disk(oo, od, tmin, tmax, t);
   if (TR_HAS_SHAPE(SHAPE_CYLINDER) && s.type == SHAPE_CYLINDER)
     return intersect_unit_cylinder(oo, od, tmin, tmax, t);
   return false;

@@ -13,7 +13,8 @@ namespace tr {
 namespace {
 
 double shifted_gaussian(double x, double sigma, double r) {
-  return std::max(0.0, std::exp(-x * x / (2 * sigma * sigma)) - std::exp(-r * r / (2 * sigma * sigma)));
+  return std::max(0.0,
+                  std::exp(-x * x / (2 * sigma * sigma)) - std::exp(-r * r / (2 * sigma * sigma)));
 }
 
 TEST(GaussianFilter, SamplingEstimatesTheNormalizedFilter) {
@@ -46,7 +47,8 @@ TEST(GaussianFilter, SamplingEstimatesTheNormalizedFilter) {
 }
 
 TEST(GaussianFilter, ErfinvInvertsErf) {
-  for (float x = -0.999f; x < 1.0f; x += 0.0123f) EXPECT_NEAR(erf_approx(erfinv_approx(x)), x, 2e-6f) << x;
+  for (float x = -0.999f; x < 1.0f; x += 0.0123f)
+    EXPECT_NEAR(erf_approx(erfinv_approx(x)), x, 2e-6f) << x;
 }
 
 }  // namespace

@@ -37,10 +37,11 @@ TEST(DirectIntegrator, AgreesWithPathAtDepthTwo) {
   RgbImage b = to_rgb_image(direct, direct.mean), bv = to_rgb_image(direct, direct.variance);
   HypothesisTestResult pixel = pixel_welch_test(a, av, o.spp, b, bv, o.spp);
   HypothesisTestResult block = block_welch_test(a, av, o.spp, b, bv, o.spp);
-  EXPECT_TRUE(pixel.passed) << pixel.failing_values << " failing values, min p " << pixel.min_p << " at ("
-                            << pixel.min_p_x << ", " << pixel.min_p_y << ")";
-  EXPECT_TRUE(block.passed) << block.failing_values << " failing block values, min p " << block.min_p << " at ("
-                            << block.min_p_x << ", " << block.min_p_y << ")";
+  EXPECT_TRUE(pixel.passed) << pixel.failing_values << " failing values, min p " << pixel.min_p
+                            << " at (" << pixel.min_p_x << ", " << pixel.min_p_y << ")";
+  EXPECT_TRUE(block.passed) << block.failing_values << " failing block values, min p "
+                            << block.min_p << " at (" << block.min_p_x << ", " << block.min_p_y
+                            << ")";
 }
 
 }  // namespace

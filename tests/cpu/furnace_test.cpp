@@ -52,18 +52,26 @@ void expect_furnace_value(const std::string& file, double expected) {
     double image_mean = sum / double(pixels);
     double image_se = std::sqrt(var_sum) / double(pixels);
     EXPECT_LE(std::abs(image_mean - expected), 3.0 * image_se)
-        << file << " channel " << c << ": image mean " << image_mean << ", expected " << expected << " +- 3 x "
-        << image_se;
+        << file << " channel " << c << ": image mean " << image_mean << ", expected " << expected
+        << " +- 3 x " << image_se;
     EXPECT_LE(worst_z, z_pixel) << file << " channel " << c << ": a pixel is " << worst_z
-                                << " standard errors from " << expected << " (mean " << worst_mean << ", standard error "
-                                << worst_se << ")";
+                                << " standard errors from " << expected << " (mean " << worst_mean
+                                << ", standard error " << worst_se << ")";
   }
 }
 
-TEST(Furnace, WhiteDiffuseSphereVanishes) { expect_furnace_value("furnace_diffuse_white.xml", 1.0); }
-TEST(Furnace, SmoothDielectricSphereVanishes) { expect_furnace_value("furnace_dielectric.xml", 1.0); }
-TEST(Furnace, PerfectConductorSphereVanishes) { expect_furnace_value("furnace_conductor.xml", 1.0); }
-TEST(Furnace, DiffuseSphereShowsItsAlbedo) { expect_furnace_value("furnace_diffuse_half.xml", 0.5); }
+TEST(Furnace, WhiteDiffuseSphereVanishes) {
+  expect_furnace_value("furnace_diffuse_white.xml", 1.0);
+}
+TEST(Furnace, SmoothDielectricSphereVanishes) {
+  expect_furnace_value("furnace_dielectric.xml", 1.0);
+}
+TEST(Furnace, PerfectConductorSphereVanishes) {
+  expect_furnace_value("furnace_conductor.xml", 1.0);
+}
+TEST(Furnace, DiffuseSphereShowsItsAlbedo) {
+  expect_furnace_value("furnace_diffuse_half.xml", 0.5);
+}
 
 }  // namespace
 }  // namespace tr::test

@@ -8,9 +8,12 @@
 
 namespace tr::test {
 
-inline std::string test_scene(const std::string& name) { return std::string(TWINRAY_TEST_SCENES) + "/" + name; }
+inline std::string test_scene(const std::string& name) {
+  return std::string(TWINRAY_TEST_SCENES) + "/" + name;
+}
 
-inline RenderResult render_file(const std::string& path, RenderOptions options = {}, LoadOptions load = {}) {
+inline RenderResult render_file(const std::string& path, RenderOptions options = {},
+                                LoadOptions load = {}) {
   Scene scene = load_scene(path, load);
   return render_cpu(scene, options);
 }

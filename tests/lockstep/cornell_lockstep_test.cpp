@@ -35,12 +35,13 @@ void expect_cornell_lockstep(uint32_t spp, uint32_t seed) {
   LockstepOptions lo;
   lo.required_fraction = 0.99;
   LockstepResult r = lockstep_compare(mean_image(gpu), mean_image(cpu), lo);
-  std::printf("Cornell box %u spp: %.6f of pixels within tolerance, %zu systematic cells\n", spp, r.fraction_within,
-              r.systematic_cells);
+  std::printf("Cornell box %u spp: %.6f of pixels within tolerance, %zu systematic cells\n", spp,
+              r.fraction_within, r.systematic_cells);
   for (const LockstepPixel& p : r.worst)
-    std::printf("  (%d, %d) gpu %.7g %.7g %.7g cpu %.7g %.7g %.7g excess %.3g\n", p.x, p.y, p.a[0], p.a[1], p.a[2],
-                p.b[0], p.b[1], p.b[2], p.excess);
-  EXPECT_TRUE(r.passed) << r.fraction_within << " within tolerance, " << r.systematic_cells << " systematic cells";
+    std::printf("  (%d, %d) gpu %.7g %.7g %.7g cpu %.7g %.7g %.7g excess %.3g\n", p.x, p.y, p.a[0],
+                p.a[1], p.a[2], p.b[0], p.b[1], p.b[2], p.excess);
+  EXPECT_TRUE(r.passed) << r.fraction_within << " within tolerance, " << r.systematic_cells
+                        << " systematic cells";
 }
 
 TEST(CornellLockstep, OneSamplePerPixel) { expect_cornell_lockstep(1, 21); }
