@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "validation/image/xml_escape.h"
+
 namespace tr {
 
 double metric_value(const ConvergencePoint& p, ConvergenceMetric metric) {
@@ -18,29 +20,6 @@ std::string csv_field(const std::string& s) {
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 std::string fmt(const char* f, double v) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/temp_file.h"
+#include "validation/image/xml_escape.h"
 
 namespace tr {
 
@@ -33,29 +34,6 @@ std::string base64_encode(const std::string& bytes) {
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string number(double v, const char* fmt = "%.4g") {
   if (std::isnan(v)) return "n/a";
   if (std::isinf(v)) return v > 0 ? "&infin;" : "-&infin;";
@@ -75,7 +53,7 @@ std::string embedded_image(const ReportImage& image) {
   std::stringstream bytes;
   bytes << in.rdbuf();
   return "<figure><img src=\"data:image/png;base64," + base64_encode(bytes.str()) + "\" alt=\"" +
-         escape(image.caption) + "\"><figcaption>" + escape(image.caption) +
+         xml_escape(image.caption) + "\"><figcaption>" + xml_escape(image.caption) +
          "</figcaption></figure>";
 }
 
@@ -94,7 +72,7 @@ std::string test_row(const HypothesisTestResult& t) {
 std::string comparison_html(const ReportComparison& c) {
   const CompareReport& r = c.report;
   std::ostringstream h;
-  h << "<div class=\"comparison\"><h3>" << escape(c.title) << " "
+  h << "<div class=\"comparison\"><h3>" << xml_escape(c.title) << " "
     << (r.criteria.empty() ? "<span class=\"verdict none\">no criteria</span>"
                            : verdict_badge(r.passed))
     << "</h3>\n<div class=\"images\">";
@@ -121,12 +99,12 @@ std::string comparison_html(const ReportComparison& c) {
     << "</td></tr>\n</table>\n";
   if (!r.failures.empty()) {
     h << "<ul class=\"failures\">";
-    for (const std::string& f : r.failures) h << "<li>" << escape(f) << "</li>";
+    for (const std::string& f : r.failures) h << "<li>" << xml_escape(f) << "</li>";
     h << "</ul>\n";
   }
   if (!r.notes.empty()) {
     h << "<ul class=\"notes\">";
-    for (const std::string& n : r.notes) h << "<li>" << escape(n) << "</li>";
+    for (const std::string& n : r.notes) h << "<li>" << xml_escape(n) << "</li>";
     h << "</ul>\n";
   }
   h << "</div>\n";
@@ -163,26 +141,27 @@ std::string html_report(const std::string& title, const std::vector<ReportScene>
   std::ostringstream h;
   size_t passed = 0;
   for (const ReportScene& s : scenes) passed += s.passed && s.error.empty();
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << escape(title)
-    << "</title><style>" << kStyle << "</style><script>" << kScript
-    << "</script></head>\n<body>\n<h1>" << escape(title) << "</h1>\n<p id=\"summary\">" << passed
-    << " of " << scenes.size() << " scenes pass.</p>\n<table class=\"summary\"><tr><th>scene</th>"
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>"
+    << xml_escape(title) << "</title><style>" << kStyle << "</style><script>" << kScript
+    << "</script></head>\n<body>\n<h1>" << xml_escape(title) << "</h1>\n<p id=\"summary\">"
+    << passed << " of " << scenes.size()
+    << " scenes pass.</p>\n<table class=\"summary\"><tr><th>scene</th>"
     << "<th>verdict</th></tr>\n";
   for (size_t i = 0; i < scenes.size(); ++i)
-    h << "<tr><td><a href=\"#scene-" << i << "\">" << escape(scenes[i].name) << "</a></td><td>"
+    h << "<tr><td><a href=\"#scene-" << i << "\">" << xml_escape(scenes[i].name) << "</a></td><td>"
       << verdict_badge(scenes[i].passed && scenes[i].error.empty()) << "</td></tr>\n";
   h << "</table>\n";
   for (size_t i = 0; i < scenes.size(); ++i) {
     const ReportScene& s = scenes[i];
     bool ok = s.passed && s.error.empty();
     h << "<section class=\"scene\" id=\"scene-" << i << "\" data-verdict=\""
-      << (ok ? "pass" : "fail") << "\">\n<h2>" << escape(s.name) << " " << verdict_badge(ok)
+      << (ok ? "pass" : "fail") << "\">\n<h2>" << xml_escape(s.name) << " " << verdict_badge(ok)
       << "</h2>\n";
-    if (!s.error.empty()) h << "<p class=\"error\">" << escape(s.error) << "</p>\n";
+    if (!s.error.empty()) h << "<p class=\"error\">" << xml_escape(s.error) << "</p>\n";
     if (!s.facts.empty()) {
       h << "<table class=\"facts\">";
       for (const auto& [label, value] : s.facts)
-        h << "<tr><th>" << escape(label) << "</th><td>" << escape(value) << "</td></tr>";
+        h << "<tr><th>" << xml_escape(label) << "</th><td>" << xml_escape(value) << "</td></tr>";
       h << "</table>\n";
     }
     h << "<div class=\"images\">";
