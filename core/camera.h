@@ -52,7 +52,8 @@ INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) weigh
 // Primary ray through film position `film` (pixels of the full film); u_lens feeds the
 // thin lens's aperture sample.
 INLINE Ray camera_ray(Camera c, vec2 film, vec2 u_lens) {
-  vec2 s = film / vec2(float(c.width), float(c.height)) - c.principal_point;
+  // Mitsuba adds principal_point_offset to the film sample before unprojecting.
+  vec2 s = film / vec2(float(c.width), float(c.height)) + c.principal_point;
   vec3 d = normalize(
       vec3((1.0f - 2.0f * s.x) * c.tan_half_fov.x, (1.0f - 2.0f * s.y) * c.tan_half_fov.y, 1.0f));
   vec3 o = vec3(0.0f);

@@ -70,3 +70,29 @@ TEST(PortableTrig, MatchesTheLibraryWithinFourUlpScaledError) {
 
 }  // namespace
 }  // namespace tr
+
+namespace tr {
+namespace {
+
+// Mitsuba's perspective camera unprojects (film sample + principal_point_offset): with an
+// offset of +0.25 along x, the film centre looks where the film point 0.75 would, i.e. at
+// camera-space x/z = (1 - 2 * 0.75) tan(fov_x / 2).
+TEST(Camera, PrincipalPointOffsetShiftsTheFilmSample) {
+  Camera c{};
+  c.to_world[0] = vec4(1, 0, 0, 0);
+  c.to_world[1] = vec4(0, 1, 0, 0);
+  c.to_world[2] = vec4(0, 0, 1, 0);
+  c.type = SENSOR_PERSPECTIVE;
+  c.width = 2;
+  c.height = 2;
+  c.tan_half_fov = vec2(1.0f, 1.0f);
+  c.principal_point = vec2(0.25f, 0.0f);
+  c.near_clip = 1e-2f;
+  c.far_clip = 1e4f;
+  Ray r = camera_ray(c, vec2(1.0f, 1.0f), vec2(0.5f));
+  EXPECT_NEAR(r.d.x / r.d.z, -0.5f, 1e-6f);
+  EXPECT_NEAR(r.d.y / r.d.z, 0.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace tr
