@@ -1,5 +1,5 @@
 // Emitter sampling and evaluation over all emitters of the scene. One emitter is chosen
-// with probability proportional to its estimated power (the scene's emitter alias table),
+// with probability proportional to its `sampling_weight` (the scene's emitter alias table),
 // then sampled by its own strategy; densities include the selection probability.
 #ifndef TWINRAY_CORE_EMITTER_H
 #define TWINRAY_CORE_EMITTER_H

@@ -185,11 +185,9 @@ struct SceneGlobals {
   Camera camera;
   Integrator integrator;
   uint emitter_count;
-  uint emitter_alias_offset;  // power-proportional emitter selection table
+  uint emitter_alias_offset;  // emitter selection table, pmf proportional to sampling_weight
   uint environment;           // the constant/envmap emitter, or NO_INDEX
   uint instance_count;
-  vec3 bounds_center;  // bounding sphere of the scene geometry
-  float bounds_radius;
 };
 
 TR_NAMESPACE_END

@@ -1,5 +1,5 @@
-// Emitter plugins -> Emitter records, the envmap's texel alias table and the
-// power-proportional emitter-selection table. Parameters as Mitsuba 3's src/emitters/*.cpp.
+// Emitter plugins -> Emitter records, the envmap's texel alias table and the emitter-selection
+// table. Parameters as Mitsuba 3's src/emitters/*.cpp.
 #include <algorithm>
 #include <cmath>
 
@@ -107,7 +107,6 @@ void SceneBuilder::add_emitter(Node& n) {
       return lum(glm::dvec3(glm::vec3(b_.texels[offset + size_t(j) * w + i])));
     };
     std::vector<double> weights(size_t(w) * h);
-    double mean = 0.0, solid_angle_weight = 0.0;
     for (int j = 0; j < h; ++j) {
       double sin_theta = std::sin(PI_D * (j + 0.5) / h);
       for (int i = 0; i < w; ++i) {
@@ -116,14 +115,11 @@ void SceneBuilder::add_emitter(Node& n) {
           for (int di = -1; di <= 1; ++di)
             neighbourhood = std::max(neighbourhood, texel_lum(i + di, j + dj));
         weights[size_t(j) * w + i] = sin_theta * (l + neighbourhood) / 2.0;
-        mean += sin_theta * l;
-        solid_angle_weight += sin_theta;
         if (l < 0.0)
           fail(find_property(n, "filename")->loc, describe(n), ": negative radiance in the map");
       }
     }
     e.radiance = vec3(1.0f);  // the map itself holds the radiance (times `scale`)
-    pe.mean_luminance = mean / solid_angle_weight;  // for the power estimate
     std::vector<AliasEntry> table;
     try {
       table = build_alias_table(weights);
@@ -139,50 +135,42 @@ void SceneBuilder::add_emitter(Node& n) {
     fail(n.loc, "unknown emitter type \"", n.type,
          "\" (supported: area, point, directional, constant, envmap)");
   }
+  pe.sampling_weight = take_sampling_weight(n);
   check_consumed(n);
   emitters_.push_back(pe);
 }
 
+double SceneBuilder::take_sampling_weight(Node& emitter) {
+  double w = take_float(emitter, "sampling_weight", 1.0);
+  if (!(w >= 0.0 && std::isfinite(w)))
+    fail(find_property(emitter, "sampling_weight")->loc, describe(emitter),
+         ": sampling_weight must be finite and >= 0");
+  return w;
+}
+
+// Emitters are chosen with probability proportional to their `sampling_weight`, uniformly by
+// default, as Mitsuba 3's Scene::sample_emitter (src/render/scene.cpp). The choice shapes each
+// pixel's variance, which the Mitsuba test references' variance images assume: a power-based
+// choice is unbiased too but fails those tests where it trades variance between lights.
 void SceneBuilder::finalize_emitters() {
   // Area emitters were appended by finalize_shapes; the others follow in document order.
-  double env_mean_luminance = 0.0;
   for (const PendingEmitter& pe : emitters_) {
-    if (pe.record.type == EMITTER_ENVMAP) env_mean_luminance = pe.mean_luminance;
     if (pe.record.type == EMITTER_CONSTANT || pe.record.type == EMITTER_ENVMAP)
       b_.globals.environment = uint(b_.emitters.size());
     b_.emitters.push_back(pe.record);
+    emitter_weights_.push_back({pe.sampling_weight, pe.loc});
   }
   b_.globals.emitter_count = uint(b_.emitters.size());
   b_.globals.emitter_alias_offset = uint(b_.alias.size());
   if (b_.emitters.empty()) return;
-
-  // Power estimates (flux) for the selection pmf.
-  double R = b_.globals.bounds_radius > 0.0f ? b_.globals.bounds_radius : 1.0;  // no geometry
-  std::vector<double> power;
-  for (size_t i = 0; i < b_.emitters.size(); ++i) {
-    const Emitter& e = b_.emitters[i];
-    double l = lum(glm::dvec3(e.radiance));
-    if (e.type == EMITTER_ENVMAP) l = env_mean_luminance;
-    switch (e.type) {
-      case EMITTER_AREA:
-        power.push_back(PI_D * b_.shapes[e.shape].area * l);
-        break;
-      case EMITTER_POINT:
-        power.push_back(4.0 * PI_D * l);
-        break;
-      case EMITTER_DIRECTIONAL:
-        power.push_back(PI_D * R * R * l);
-        break;
-      default:
-        power.push_back(4.0 * PI_D * PI_D * R * R * l * e.scale);
-        break;
-    }
+  std::vector<double> weights;
+  for (const auto& [w, loc] : emitter_weights_) weights.push_back(w);
+  std::vector<AliasEntry> table;
+  try {
+    table = build_alias_table(weights);
+  } catch (const std::exception&) {
+    fail(emitter_weights_[0].second, "every emitter of the scene has sampling_weight 0");
   }
-  double total = 0.0;
-  for (double p : power) total += p;
-  // All emitters black: every pmf is unbiased, choose uniformly.
-  if (!(total > 0.0)) power.assign(power.size(), 1.0);
-  std::vector<AliasEntry> table = build_alias_table(power);
   b_.alias.insert(b_.alias.end(), table.begin(), table.end());
 }
 

@@ -391,12 +391,7 @@ Material SceneBuilder::build_principled(Node& n) {
   m.param[PRINCIPLED_CLEARCOAT] = textured(n, "clearcoat", glm::dvec3(0.0), true);
   m.param[PRINCIPLED_CLEARCOAT_GLOSS] = textured(n, "clearcoat_gloss", glm::dvec3(0.0), true);
   m.param[PRINCIPLED_SPEC_TRANS] = textured(n, "spec_trans", glm::dvec3(0.0), true);
-  if (Property* flat = find_property(n, "flatness")) {
-    bool zero = (flat->kind == PropertyKind::Float || flat->kind == PropertyKind::Integer) &&
-                take_float(n, "flatness") == 0.0;
-    if (!zero)
-      fail(flat->loc, describe(n), ": 'flatness' is not supported by twinray's principled BSDF");
-  }
+  m.param[PRINCIPLED_FLATNESS] = textured(n, "flatness", glm::dvec3(0.0), true);
   double srate_diffuse = take_float(n, "diffuse_reflectance_sampling_rate", 1.0);
   double srate_specular = take_float(n, "main_specular_sampling_rate", 1.0);
   double srate_clearcoat = take_float(n, "clearcoat_sampling_rate", 1.0);
@@ -408,23 +403,21 @@ Material SceneBuilder::build_principled(Node& n) {
   bool has_spec_trans =
       st && !((st->kind == PropertyKind::Float || st->kind == PropertyKind::Integer) &&
               (st->kind == PropertyKind::Float ? st->number : double(st->integer)) == 0.0);
-  double eta, specular;
+  double eta;
   if (has_property(n, "eta") && has_property(n, "specular"))
     fail(find_property(n, "eta")->loc, describe(n), ": give either 'eta' or 'specular', not both");
   if (has_property(n, "eta")) {
     eta = take_float(n, "eta");
     if (has_spec_trans && eta == 1.0) eta = 1.001;  // eta = 1 is not plausible for transmission
     if (!(eta > 0.0)) fail(find_property(n, "eta")->loc, describe(n), ": eta must be positive");
-    specular = sqr((eta - 1.0) / (eta + 1.0)) / 0.08;
   } else {
-    specular = take_float(n, "specular", 0.5);
+    double specular = take_float(n, "specular", 0.5);
     if (has_spec_trans && specular == 0.0) specular = 1e-3;
     if (!(specular >= 0.0 && specular < 12.5))
       fail(find_property(n, "specular")->loc, describe(n), ": specular must be in [0, 12.5)");
     eta = 2.0 / (1.0 - std::sqrt(0.08 * specular)) - 1.0;
   }
   m.eta = float(eta);
-  m.param[PRINCIPLED_SPECULAR] = constant_value(glm::dvec3(specular));
   return m;
 }
 

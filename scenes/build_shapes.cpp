@@ -52,41 +52,6 @@ void set_transforms(Shape& r, const glm::dmat4& m) {
   store_rows(glm::inverse(m), r.to_object);
 }
 
-// Corners of the canonical object's bounding box, for bounds.
-std::vector<glm::dvec3> canonical_corners(uint type) {
-  double zlo = type == SHAPE_SPHERE ? -1.0 : 0.0;
-  double zhi = type == SHAPE_DISK ? 0.0 : 1.0;
-  std::vector<glm::dvec3> c;
-  for (double x : {-1.0, 1.0})
-    for (double y : {-1.0, 1.0})
-      for (double z : {zlo, zhi}) c.emplace_back(x, y, z);
-  return c;
-}
-
-glm::dmat4 shape_to_world(const Shape& r) {
-  glm::dmat4 m(1.0);
-  for (int row = 0; row < 3; ++row)
-    for (int col = 0; col < 4; ++col) m[col][row] = r.to_world[row][col];
-  return m;
-}
-
-void extend_bounds(const PendingShape& s, const glm::dmat4& to_world, AxisBox& box) {
-  if (s.record.type == SHAPE_MESH) {
-    for (const glm::vec3& p : s.mesh.positions)
-      box.extend(glm::dvec3(to_world * glm::dvec4(glm::dvec3(p), 1.0)));
-  } else if (s.record.type == SHAPE_SPHERE) {
-    glm::dmat4 m = to_world * shape_to_world(s.record);
-    glm::dvec3 c(m[3]);
-    double r = glm::length(glm::dvec3(m[0]));
-    box.extend(c - glm::dvec3(r));
-    box.extend(c + glm::dvec3(r));
-  } else {
-    glm::dmat4 m = to_world * shape_to_world(s.record);
-    for (const glm::dvec3& c : canonical_corners(s.record.type))
-      box.extend(glm::dvec3(m * glm::dvec4(c, 1.0)));
-  }
-}
-
 }  // namespace
 
 void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_group) {
@@ -120,6 +85,7 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
     glm::dvec3 radiance = take_color(e, "radiance", glm::dvec3(1.0));
     if (glm::any(glm::lessThan(radiance, glm::dvec3(0.0))))
       fail(rad->loc, describe(e), ": radiance must not be negative");
+    s.sampling_weight = take_sampling_weight(e);
     check_consumed(e);
     s.emitting = true;
     s.radiance = glm::vec3(radiance);
@@ -233,7 +199,7 @@ void SceneBuilder::add_instance(Node& inst) {
   instances_.push_back({group_index_[&g], to_world});
 }
 
-void SceneBuilder::finalize_shapes(AxisBox& bounds) {
+void SceneBuilder::finalize_shapes() {
   auto append = [&](PendingShape& s) {
     uint index = uint(b_.shapes.size());
     Shape& r = s.record;
@@ -274,14 +240,12 @@ void SceneBuilder::finalize_shapes(AxisBox& bounds) {
       }
       r.emitter = uint(b_.emitters.size());
       b_.emitters.push_back(e);
+      emitter_weights_.push_back({s.sampling_weight, s.emitter_loc});
     }
     b_.shapes.push_back(r);
   };
 
-  for (PendingShape& s : top_shapes_) {
-    extend_bounds(s, glm::dmat4(1.0), bounds);
-    append(s);
-  }
+  for (PendingShape& s : top_shapes_) append(s);
   Instance top{};
   store_rows(glm::dmat4(1.0), top.to_world);
   store_rows(glm::dmat4(1.0), top.to_object);
@@ -295,7 +259,6 @@ void SceneBuilder::finalize_shapes(AxisBox& bounds) {
   }
   for (const PendingInstance& pi : instances_) {
     const PendingGroup& g = groups_[pi.group];
-    for (const PendingShape& s : g.shapes) extend_bounds(s, pi.to_world, bounds);
     Instance inst{};
     store_rows(pi.to_world, inst.to_world);
     store_rows(glm::inverse(pi.to_world), inst.to_object);

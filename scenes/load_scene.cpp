@@ -54,17 +54,7 @@ Scene SceneBuilder::build() {
     add_integrator(path);
   }
 
-  AxisBox bounds;
-  finalize_shapes(bounds);
-  if (bounds.empty()) {
-    b_.globals.bounds_center = vec3(0.0f);
-    b_.globals.bounds_radius = 0.0f;
-  } else {
-    // Bounding sphere of the box, as Mitsuba's BoundingBox::bounding_sphere.
-    glm::dvec3 center = 0.5 * (bounds.lo + bounds.hi);
-    b_.globals.bounds_center = vec3(center);
-    b_.globals.bounds_radius = float(glm::length(bounds.hi - center));
-  }
+  finalize_shapes();
   finalize_emitters();
   b_.globals.instance_count = uint(b_.instances.size());
   return std::move(scene_);

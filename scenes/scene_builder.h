@@ -20,21 +20,13 @@ struct PendingShape {
   TriangleMesh mesh;  // SHAPE_MESH only; world space (group space inside a shapegroup)
   bool emitting = false;
   glm::vec3 radiance{0.0f};
+  double sampling_weight = 1.0;
   Location emitter_loc;
 };
 
 struct PendingGroup {
   std::vector<PendingShape> shapes;
   uint first_shape = 0;
-};
-
-struct AxisBox {
-  glm::dvec3 lo{1e300}, hi{-1e300};
-  void extend(glm::dvec3 p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  bool empty() const { return lo.x > hi.x; }
 };
 
 class SceneBuilder {
@@ -81,17 +73,21 @@ class SceneBuilder {
   void add_shape(Node& shape, std::vector<PendingShape>& out, bool in_group);
   void add_shapegroup(Node& group);
   void add_instance(Node& instance);
-  void finalize_shapes(AxisBox& bounds);
+  void finalize_shapes();
 
   // ---- emitters (build_emitters.cpp)
   struct PendingEmitter {
     Emitter record{};
     Location loc;
-    double mean_luminance = 0.0;  // envmap: solid-angle mean luminance of the map
+    double sampling_weight = 1.0;
   };
   std::vector<PendingEmitter> emitters_;  // non-area emitters, document order
+  // Each record of SceneBuffers::emitters with its `sampling_weight` and its XML location.
+  std::vector<std::pair<double, Location>> emitter_weights_;
   void add_emitter(Node& emitter);
   void finalize_emitters();
+  // Mitsuba 3's per-emitter `sampling_weight` (src/render/emitter.cpp): finite, >= 0, default 1.
+  static double take_sampling_weight(Node& emitter);
 
   // ---- sensor, film, sampler, integrator (build_sensor.cpp)
   void add_sensor(Node& sensor);

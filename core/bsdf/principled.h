@@ -46,7 +46,6 @@ struct PrincipledParams {
   float clearcoat_rate;  // clearcoat_sampling_rate
 };
 
-// `flatness` has no Material slot yet: the loader must reject it (it is 0 here).
 INLINE PrincipledParams principled_params(Material m, vec2 uv) {
   PrincipledParams p;
   p.base_color = eval_textured(m.param[PRINCIPLED_BASE_COLOR], uv);
@@ -59,7 +58,7 @@ INLINE PrincipledParams principled_params(Material m, vec2 uv) {
   p.clearcoat = eval_textured_1(m.param[PRINCIPLED_CLEARCOAT], uv);
   p.clearcoat_gloss = eval_textured_1(m.param[PRINCIPLED_CLEARCOAT_GLOSS], uv);
   p.spec_trans = eval_textured_1(m.param[PRINCIPLED_SPEC_TRANS], uv);
-  p.flatness = 0.0f;
+  p.flatness = eval_textured_1(m.param[PRINCIPLED_FLATNESS], uv);
   p.eta = m.eta;
   vec3 rates = m.param[PRINCIPLED_SAMPLING_RATES].value;
   p.diffuse_rate = rates.x;

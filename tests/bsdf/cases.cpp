@@ -278,6 +278,11 @@ void add_bsdfs(StatisticalList& list) {
            p.anisotropic = 0.8f;
            p.metallic = 1.0f;
          }},
+        {"flatness=1 roughness=0.8",
+         [](PrincipledParameters& p) {
+           p.flatness = 1.0f;
+           p.roughness = 0.8f;
+         }},
         {"sheen=1 sheen_tint=0.5",
          [](PrincipledParameters& p) {
            p.sheen = 1.0f;
@@ -307,7 +312,7 @@ void add_bsdfs(StatisticalList& list) {
         {"all=0.5",
          [](PrincipledParameters& p) {
            p.metallic = p.spec_tint = p.anisotropic = p.sheen = p.sheen_tint = 0.5f;
-           p.clearcoat = p.clearcoat_gloss = p.spec_trans = 0.5f;
+           p.clearcoat = p.clearcoat_gloss = p.spec_trans = p.flatness = 0.5f;
          }},
         {"sampling_rates=(0.2,1,2)",
          [](PrincipledParameters& p) {
@@ -405,16 +410,17 @@ std::vector<ExtremesCase> build_extremes() {
   // 0 and all at 1, over the roughness and eta grids and black/white base colour.
   auto weights = [](PrincipledParameters& p, float w) {
     p.metallic = p.specular = p.spec_tint = p.anisotropic = p.sheen = p.sheen_tint = w;
-    p.clearcoat = p.clearcoat_gloss = p.spec_trans = w;
+    p.clearcoat = p.clearcoat_gloss = p.spec_trans = p.flatness = w;
   };
   float PrincipledParameters::*fields[] = {
-      &PrincipledParameters::metallic,  &PrincipledParameters::specular,
-      &PrincipledParameters::spec_tint, &PrincipledParameters::anisotropic,
-      &PrincipledParameters::sheen,     &PrincipledParameters::sheen_tint,
-      &PrincipledParameters::clearcoat, &PrincipledParameters::clearcoat_gloss,
-      &PrincipledParameters::spec_trans};
-  const char* field_names[] = {"metallic",   "specular",  "spec_tint",       "anisotropic", "sheen",
-                               "sheen_tint", "clearcoat", "clearcoat_gloss", "spec_trans"};
+      &PrincipledParameters::metallic,   &PrincipledParameters::specular,
+      &PrincipledParameters::spec_tint,  &PrincipledParameters::anisotropic,
+      &PrincipledParameters::sheen,      &PrincipledParameters::sheen_tint,
+      &PrincipledParameters::clearcoat,  &PrincipledParameters::clearcoat_gloss,
+      &PrincipledParameters::spec_trans, &PrincipledParameters::flatness};
+  const char* field_names[] = {"metallic",   "specular",   "spec_tint", "anisotropic",
+                               "sheen",      "sheen_tint", "clearcoat", "clearcoat_gloss",
+                               "spec_trans", "flatness"};
   for (vec3 base : kReflectances) {
     for (float roughness : {0.0f, 0.01f, 0.5f, 1.0f}) {
       for (float eta : kEtas) {
@@ -430,7 +436,7 @@ std::vector<ExtremesCase> build_extremes() {
               principled(p));
         }
       }
-      for (int f = 0; f < 9; ++f) {
+      for (int f = 0; f < 10; ++f) {
         for (float w : {0.0f, 0.5f, 1.0f}) {
           PrincipledParameters p;
           weights(p, 0.5f);

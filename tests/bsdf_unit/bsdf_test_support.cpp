@@ -84,9 +84,9 @@ Material principled(const PrincipledParams& p) {
   m.param[PRINCIPLED_CLEARCOAT] = constant(p.clearcoat);
   m.param[PRINCIPLED_CLEARCOAT_GLOSS] = constant(p.clearcoat_gloss);
   m.param[PRINCIPLED_SPEC_TRANS] = constant(p.spec_trans);
+  m.param[PRINCIPLED_FLATNESS] = constant(p.flatness);
   m.param[PRINCIPLED_SAMPLING_RATES] =
       constant(vec3(p.diffuse_rate, p.specular_rate, p.clearcoat_rate));
-  if (p.flatness != 0.0f) throw std::logic_error("principled: flatness has no material slot");
   return m;
 }
 

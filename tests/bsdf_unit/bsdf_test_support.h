@@ -34,8 +34,7 @@ Material rough_conductor(uint flags, float alpha_u, float alpha_v, vec3 eta, vec
 Material rough_dielectric(uint flags, float alpha_u, float alpha_v, float eta);
 // Plastics: Material.extra gets Mitsuba's specular sampling weight 1 / (mean(R_d) + 1).
 Material plastic(vec3 diffuse_reflectance, float eta, bool nonlinear);
-// principled with every parameter constant (flatness must be 0: it has no slot) and
-// sampling rates (1, 1, 1).
+// principled with every parameter constant.
 Material principled(const PrincipledParams& p);
 // Builds the transmittance table as a texture of test_scene(), as the loader does.
 Material rough_plastic(uint flags, float alpha, vec3 diffuse_reflectance, float eta,

@@ -59,8 +59,6 @@ Scene probe_scene(uint width, uint height) {
   b.globals.emitter_count = 1;
   b.globals.emitter_alias_offset = 0;
   b.globals.environment = 0;
-  b.globals.bounds_center = vec3(0.0f, 0.0f, 5.0f);
-  b.globals.bounds_radius = 30.0f;
 
   Material diffuse{};
   diffuse.type = BSDF_DIFFUSE;

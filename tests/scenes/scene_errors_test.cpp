@@ -113,6 +113,16 @@ TEST(SceneErrors, WrongTypesAndValues) {
       "1.5", "must lie in [0, 1]");
   expect_error("<shape type=\"sphere\">\n<boolean name=\"flip_normals\" value=\"yes\"/></shape>",
                "yes", "expected \"true\" or \"false\"");
+  expect_error("<emitter type=\"point\">\n<float name=\"sampling_weight\" value=\"-1\"/></emitter>",
+               "sampling_weight", "sampling_weight must be finite and >= 0");
+  expect_error(
+      "<shape type=\"sphere\"><emitter type=\"area\">\n<float name=\"sampling_weight\" "
+      "value=\"-2\"/></emitter></shape>",
+      "sampling_weight", "sampling_weight must be finite and >= 0");
+  expect_error(
+      "<shape type=\"sphere\">\n<emitter type=\"area\"><float name=\"sampling_weight\" "
+      "value=\"0\"/></emitter></shape>",
+      "<emitter", "every emitter of the scene has sampling_weight 0");
 }
 
 TEST(SceneErrors, MissingFiles) {

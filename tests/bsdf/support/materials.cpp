@@ -154,7 +154,7 @@ Material principled(const PrincipledParameters& p) {
   m.param[PRINCIPLED_BASE_COLOR] = constant(p.base_color);
   m.param[PRINCIPLED_ROUGHNESS] = constant(vec3(p.roughness));
   m.param[PRINCIPLED_METALLIC] = constant(vec3(p.metallic));
-  m.param[PRINCIPLED_SPECULAR] = constant(vec3(specular));
+  m.param[PRINCIPLED_FLATNESS] = constant(vec3(p.flatness));
   m.param[PRINCIPLED_SPEC_TINT] = constant(vec3(p.spec_tint));
   m.param[PRINCIPLED_ANISOTROPIC] = constant(vec3(p.anisotropic));
   m.param[PRINCIPLED_SHEEN] = constant(vec3(p.sheen));

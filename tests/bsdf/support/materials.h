@@ -38,6 +38,7 @@ struct PrincipledParameters {
   float clearcoat = 0.0f;
   float clearcoat_gloss = 0.0f;
   float spec_trans = 0.0f;
+  float flatness = 0.0f;
   float eta = 0.0f;  // > 0: sets `eta` (and specular from it); 0: eta from `specular`
   vec3 sampling_rates = vec3(1.0f);  // diffuse, main specular, clearcoat
 };
