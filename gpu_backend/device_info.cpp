@@ -47,6 +47,7 @@ DeviceInfo inspect(uint32_t index, VkPhysicalDevice device) {
   vkGetPhysicalDeviceProperties(device, &props);
   info.name = props.deviceName;
   info.type = type_name(props.deviceType);
+  info.cpu = props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   info.api_version = version_string(props.apiVersion);
   if (props.apiVersion < VK_API_VERSION_1_3)
     info.missing.push_back("Vulkan 1.3 (device offers " + info.api_version + ")");

@@ -14,6 +14,7 @@ struct DeviceInfo {
   VkPhysicalDevice handle = VK_NULL_HANDLE;
   std::string name;
   std::string type;  // "discrete GPU", "CPU", ...
+  bool cpu = false;  // a software rasteriser on the host (lavapipe)
   std::string api_version;
   std::vector<std::string> missing;  // what the backend needs and the device lacks
   uint32_t queue_family = 0;         // a queue family with compute, when usable

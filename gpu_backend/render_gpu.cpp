@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <memory>
 
@@ -21,13 +22,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Dispatches aim at this duration, far below any driver watchdog (Windows TDR: 2 s), and
-// never exceed kMaxBatch samples per pixel (float Welford inside a batch).
-const double kTargetDispatchSeconds = 0.1;
-const uint32_t kMaxBatch = 256;
-
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Samples per pixel of each dispatch. The float Welford inside a batch rounds differently
+// for other batch boundaries, so the schedule depends only on the device type and the image
+// size, never on measured times: the same seed gives the same image on every run. A dispatch
+// holds about 2^20 samples on a CPU device (lavapipe, ~0.5 Msamples/s: ~2 s) and 2^23 on a
+// GPU (H100, ~400 Msamples/s: ~20 ms; a GPU 40x slower still stays under Windows' 2 s
+// watchdog), and at most 256 per pixel (float Welford inside a batch).
+uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
+  const double samples_per_dispatch = device.cpu ? 1048576.0 : 8388608.0;
+  return static_cast<uint32_t>(
+      std::clamp(std::floor(samples_per_dispatch / double(pixels)), 1.0, 256.0));
 }
 
 }  // namespace
@@ -50,7 +58,8 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
 
   VulkanInstance instance;
   const std::vector<DeviceInfo> devices = query_devices(instance.handle());
-  VulkanDevice device(instance, select_device(devices, options.device));
+  const DeviceInfo& device_info = select_device(devices, options.device);
+  VulkanDevice device(instance, device_info);
   timing.setup_seconds = seconds_since(phase);
   phase = Clock::now();
   RayTracingPipeline pipeline(device, raygen, raygen_bytes,
@@ -123,12 +132,11 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
   };
 
   MomentAccumulator moments(pixels);
-  uint32_t batch_size = 1;
+  const uint32_t batch_size = batch_spp(device_info, pixels);
   uint32_t submitted = 0, merged = 0;
   unsigned next = 0, in_flight = 0, completed = 0;
-  Clock::time_point last_completion = Clock::now();
   while (merged < spp) {
-    // The first dispatch runs alone: it calibrates the batch size (and lavapipe compiles in it).
+    // The first dispatch runs alone: lavapipe compiles the shaders in it.
     const unsigned max_in_flight = completed == 0 ? 1 : 2;
     while (submitted < spp && in_flight < max_in_flight) {
       const uint32_t count = std::min(batch_size, spp - submitted);
@@ -138,13 +146,8 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
     }
     Slot& slot = slots[next];
     slot.commands->wait();
-    // Device time of this batch: from when the device could start it to its completion.
-    const Clock::time_point now = Clock::now();
-    const double dispatch_seconds =
-        std::chrono::duration<double>(now - std::max(slot.submitted, last_completion)).count();
-    last_completion = now;
     if (completed == 0) {
-      timing.first_dispatch_seconds = dispatch_seconds;
+      timing.first_dispatch_seconds = seconds_since(slot.submitted);
       timing.first_dispatch_spp = slot.sample_count;
     }
     const PixelBatch* batch = static_cast<const PixelBatch*>(slot.readback.mapped());
@@ -159,10 +162,6 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
     ++completed;
     if (options.progress)
       options.progress(static_cast<uint64_t>(merged) * pixels, static_cast<uint64_t>(spp) * pixels);
-
-    const double per_sample = dispatch_seconds / slot.sample_count;
-    const double fit = per_sample > 0.0 ? kTargetDispatchSeconds / per_sample : kMaxBatch;
-    batch_size = static_cast<uint32_t>(std::clamp(fit, 1.0, static_cast<double>(kMaxBatch)));
   }
 
   result.mean = moments.mean();

@@ -155,9 +155,11 @@ void print_comparison(const Comparison& c) {
   for (const std::optional<HypothesisTestResult>* t : r.tests())
     if (*t) std::printf("    %s\n", describe_test(**t).c_str());
   if (r.lockstep_decides)
-    std::printf("    lockstep    %s  %.6f of pixels within tolerance, %zu systematic cells\n",
-                r.lockstep.passed ? "pass" : "FAIL", r.lockstep.fraction_within,
-                r.lockstep.systematic_cells);
+    std::printf(
+        "    lockstep    %s  %.6f of pixels within tolerance, %zu systematic, %zu clustered "
+        "windows\n",
+        r.lockstep.passed ? "pass" : "FAIL", r.lockstep.fraction_within,
+        r.lockstep.systematic_cells, r.lockstep.clustered_windows);
   for (const std::string& f : r.failures) std::printf("    failure: %s\n", f.c_str());
 }
 

@@ -95,9 +95,11 @@ CompareReport compare_images(const CompareInputs& in, const CompareOptions& opti
     if (*t) decide(r, (*t)->name, (*t)->passed, describe(**t));
   if (options.lockstep) {
     const LockstepResult& l = r.lockstep;
-    std::string why = format("%.6f of pixels within tolerance (need %.6f), ", l.fraction_within,
-                             options.lockstep_options.required_fraction) +
-                      format("%.0f cells with a systematic difference", double(l.systematic_cells));
+    std::string why =
+        format("%.6f of pixels within tolerance (need %.6f), ", l.fraction_within,
+               options.lockstep_options.required_fraction) +
+        format("%.0f windows with a systematic difference, ", double(l.systematic_cells)) +
+        format("%.0f with clustered differences", double(l.clustered_windows));
     decide(r, "lockstep", l.passed, why);
   }
   if (options.max_relmse)
@@ -213,7 +215,9 @@ std::string compare_report_json(const CompareReport& r, const CompareOptions& op
       .field("max_abs_difference", l.max_abs_difference)
       .field("block", lo.block)
       .field("block_alpha", l.block_alpha)
-      .field("systematic_cells", std::uint64_t(l.systematic_cells));
+      .field("systematic_cells", std::uint64_t(l.systematic_cells))
+      .field("clustered_windows", std::uint64_t(l.clustered_windows))
+      .field("most_outside_in_window", l.most_outside);
   j.key("worst_pixels").begin_array();
   for (const LockstepPixel& p : l.worst) {
     j.begin_object().field("x", p.x).field("y", p.y).field("excess", p.excess);
@@ -225,8 +229,8 @@ std::string compare_report_json(const CompareReport& r, const CompareOptions& op
   j.key("systematic_blocks").begin_array();
   for (const LockstepBlock& b : l.worst_blocks)
     j.begin_object()
-        .field("cell_x", b.x)
-        .field("cell_y", b.y)
+        .field("x", b.x)
+        .field("y", b.y)
         .field("channel", std::string(1, "RGB"[b.channel]))
         .field("mean_difference", b.mean_difference)
         .field("t", b.t)

@@ -36,7 +36,7 @@ Lockstep agreement (two renders with the same sampler seed; always reported):
   --lockstep            make lockstep agreement decide the verdict
   --tolerance REL       relative tolerance per channel (default 1e-4)
   --abs-tolerance ABS   absolute tolerance per channel (default 1e-6)
-  --lockstep-fraction F required fraction of pixels within tolerance (default 0.999)
+  --lockstep-fraction F required fraction of pixels within tolerance (default 0.99)
   --worst N             worst pixels / blocks listed (default 10)
 
 Other criteria and outputs:
@@ -223,12 +223,13 @@ void print_report(const CompareReport& r, const CompareOptions& o) {
     if (*t) print_test(**t);
   const LockstepResult& l = r.lockstep;
   std::printf(
-      "  lockstep     %s  %.6f of pixels within rel %.3g abs %.3g; %zu systematic cells%s\n",
+      "  lockstep     %s  %.6f of pixels within rel %.3g abs %.3g; %zu systematic, %zu clustered "
+      "windows%s\n",
       !r.lockstep_decides ? "info"
       : l.passed          ? "pass"
                           : "FAIL",
       l.fraction_within, o.lockstep_options.rel, o.lockstep_options.abs, l.systematic_cells,
-      r.lockstep_decides ? "" : " (not a criterion without --lockstep)");
+      l.clustered_windows, r.lockstep_decides ? "" : " (not a criterion without --lockstep)");
   if (r.lockstep_decides)
     for (const LockstepPixel& p : l.worst)
       if (p.excess > 1.0)

@@ -92,7 +92,8 @@ std::string comparison_html(const ReportComparison& c) {
   h << "<tr><td>lockstep" << (r.lockstep_decides ? "" : " (informational)") << "</td><td>"
     << (r.lockstep_decides ? verdict_badge(l.passed) : "<span class=\"verdict none\">info</span>")
     << "</td><td>" << l.pixels_outside << " / " << l.pixels << " pixels, " << l.systematic_cells
-    << " systematic blocks</td><td>" << number(l.block_alpha, "%.3g") << "</td><td></td><td>"
+    << " systematic, " << l.clustered_windows << " clustered windows</td><td>"
+    << number(l.block_alpha, "%.3g") << "</td><td></td><td>"
     << (l.worst.empty()
             ? std::string()
             : "worst (" + std::to_string(l.worst[0].x) + ", " + std::to_string(l.worst[0].y) + ")")

@@ -8,6 +8,21 @@
 
 namespace tr {
 
+namespace {
+
+// P(X >= k) for X ~ Binomial(n, f).
+double binomial_upper_tail(int n, int k, double f) {
+  if (k <= 0) return 1.0;
+  if (f <= 0.0) return 0.0;
+  double tail = 0.0;
+  for (int j = k; j <= n; ++j)
+    tail += std::exp(std::lgamma(n + 1.0) - std::lgamma(j + 1.0) - std::lgamma(n - j + 1.0) +
+                     j * std::log(f) + (n - j) * std::log1p(-f));
+  return std::min(tail, 1.0);
+}
+
+}  // namespace
+
 LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
                                 const LockstepOptions& options) {
   check_same_size(a, "first image", b, "second image");
@@ -41,21 +56,24 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
   r.worst.assign(all.begin(), all.begin() + worst_n);
 
   const int B = options.block, n = B * B;
-  r.cells_x = a.width / B;
-  r.cells_y = a.height / B;
-  r.block_alpha = sidak_alpha(options.family_alpha, 3.0 * r.cells_x * r.cells_y);
+  const int windows_x = std::max(a.width - B + 1, 0), windows_y = std::max(a.height - B + 1, 0);
+  r.windows = size_t(windows_x) * size_t(windows_y);
+  r.block_alpha = sidak_alpha(options.family_alpha, 3.0 * double(r.windows));
   std::vector<LockstepBlock> flagged;
-  for (int cy = 0; cy < r.cells_y; ++cy)
-    for (int cx = 0; cx < r.cells_x; ++cx) {
+  for (int wy = 0; wy < windows_y; ++wy)
+    for (int wx = 0; wx < windows_x; ++wx) {
       bool cell_flagged = false;
       for (int c = 0; c < 3; ++c) {
+        // The difference in units of the pixel's tolerance, so that a relative bias is the
+        // same number at every brightness.
         auto difference = [&](int i) {
-          int x = cx * B + i % B, y = cy * B + i / B;
-          return a.at(x, y, c) - b.at(x, y, c);
+          int x = wx + i % B, y = wy + i / B;
+          double va = a.at(x, y, c), vb = b.at(x, y, c);
+          return (va - vb) / (options.rel * std::max(std::fabs(va), std::fabs(vb)) + options.abs);
         };
         LockstepBlock blk;
-        blk.x = cx;
-        blk.y = cy;
+        blk.x = wx;
+        blk.y = wy;
         blk.channel = c;
         for (int i = 0; i < n; ++i) blk.mean_difference += difference(i) / n;
         double s2 = 0.0;  // two-pass sample variance
@@ -69,18 +87,32 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
           blk.t = std::copysign(INFINITY, blk.mean_difference);
           blk.p = 0.0;
         }
-        if (blk.p <= r.block_alpha && std::fabs(blk.mean_difference) > options.abs) {
+        if (blk.p <= r.block_alpha && std::fabs(blk.mean_difference) > options.systematic_floor) {
           cell_flagged = true;
           flagged.push_back(blk);
         }
       }
       if (cell_flagged) ++r.systematic_cells;
     }
+  const double f = double(r.pixels_outside) / double(r.pixels);
+  for (int wy = 0; wy < windows_y; ++wy)
+    for (int wx = 0; wx < windows_x; ++wx) {
+      int k = 0;
+      for (int i = 0; i < n; ++i)
+        if (r.excess_map[size_t(wy + i / B) * a.width + wx + i % B] > 1.0f) ++k;
+      if (k > r.most_outside) {
+        r.most_outside = k;
+        r.most_outside_x = wx;
+        r.most_outside_y = wy;
+      }
+      if (k > 0 && binomial_upper_tail(n, k, f) <= r.block_alpha) ++r.clustered_windows;
+    }
   std::sort(flagged.begin(), flagged.end(),
             [](const LockstepBlock& p, const LockstepBlock& q) { return p.p < q.p; });
   if (flagged.size() > worst_n) flagged.resize(worst_n);
   r.worst_blocks = flagged;
-  r.passed = r.fraction_within >= options.required_fraction && r.systematic_cells == 0;
+  r.passed = r.fraction_within >= options.required_fraction && r.systematic_cells == 0 &&
+             r.clustered_windows == 0;
   return r;
 }
 

@@ -3,16 +3,27 @@
 // all satisfy |a - b| <= rel max(|a|, |b|) + abs, the worst pixels, and a check for small
 // systematic differences that stay under the per-pixel tolerance.
 //
-// Systematic-difference check: over non-overlapping block x block cells (partial cells at the
-// right and bottom borders are left out) and per channel, the mean signed difference
-// d̄ = mean(a - b) is compared with its standard error s / block, s the sample standard
-// deviation of the block^2 differences, by a two-sided one-sample t-test with block^2 - 1
-// degrees of freedom (Student 1908). A cell is flagged when p <= 1 - (1 - family_alpha)^(1 /
-// (cells * 3)) (Šidák) and |d̄| > abs; a cell whose differences are all equal and non-zero
-// has s = 0 and p = 0.
+// Systematic-difference check: over every block x block window of the image (at every pixel
+// offset, so that a difference is caught wherever it sits) and per channel, the differences
+// in units of each pixel's tolerance, d = (a - b) / (rel max(|a|, |b|) + abs), have their mean
+// d̄ compared with its standard error s / block, s the sample standard deviation of the
+// block^2 values, by a two-sided one-sample t-test with block^2 - 1 degrees of freedom
+// (Student 1908). A window is flagged when p <= 1 - (1 - family_alpha)^(1 / (windows * 3))
+// (Šidák) and |d̄| > systematic_floor; a window whose values are all equal and non-zero has
+// s = 0 and p = 0.
+//
+// Cluster check: pixels outside the tolerance must be scattered. With f the image's fraction of
+// them, a window holding k of its block^2 pixels outside is flagged when the binomial tail
+// P(X >= k), X ~ B(block^2, f), is at most the same Šidák level: a rounding-driven path
+// divergence touches isolated pixels, a wrong region fails together.
 //
 // The comparison passes when at least required_fraction of the pixels are within tolerance and
-// no cell is flagged.
+// no window is flagged by either check. The default 0.99 is issue 4's criterion: a ray that grazes
+// a silhouette can hit on one backend and miss on the other (Embree's and the GPU's triangle tests
+// round differently), so a pixel may hold one sample of another path; measured on the 48x48
+// texturedprincipled1 scene at 868 spp: 4 of 2304 pixels (0.17%), two of them with max_depth 1
+// (primary rays at the sphere's silhouette). A real difference is systematic and fails the
+// cell test.
 #pragma once
 
 #include <vector>
@@ -24,10 +35,14 @@ namespace tr {
 struct LockstepOptions {
   double rel = 1e-4;
   double abs = 1e-6;
-  double required_fraction = 0.999;
+  double required_fraction = 0.99;
   int worst_count = 10;
   int block = 4;
   double family_alpha = 0.01;
+  // Smallest systematic difference flagged, in units of the per-pixel tolerance: 0.1 (1e-5
+  // relative, ~80 float ulps) stays clear of the consistent last-bit differences of two math
+  // libraries and catches a 5e-5 relative bias.
+  double systematic_floor = 0.1;
 };
 
 struct LockstepPixel {
@@ -37,8 +52,9 @@ struct LockstepPixel {
 };
 
 struct LockstepBlock {
-  int x = 0, y = 0, channel = 0;  // cell coordinates
-  double mean_difference = 0.0, t = 0.0, p = 1.0;
+  int x = 0, y = 0, channel = 0;  // the window's top-left pixel
+  double mean_difference = 0.0;   // in units of the per-pixel tolerance
+  double t = 0.0, p = 1.0;
 };
 
 struct LockstepResult {
@@ -47,9 +63,11 @@ struct LockstepResult {
   double max_abs_difference = 0.0;
   std::vector<LockstepPixel> worst;  // largest excess first, at most worst_count
   std::vector<float> excess_map;     // per pixel
-  int cells_x = 0, cells_y = 0;
+  size_t windows = 0;
   double block_alpha = 0.0;
-  size_t systematic_cells = 0;              // cells with a flagged channel
+  size_t systematic_cells = 0;   // windows with a flagged channel
+  size_t clustered_windows = 0;  // windows flagged by the cluster check
+  int most_outside = 0, most_outside_x = 0, most_outside_y = 0;  // the fullest window
   std::vector<LockstepBlock> worst_blocks;  // smallest p first, at most worst_count
   bool passed = false;
 };
