@@ -13,4 +13,9 @@ enum ExitCode : int {
   kExitInternal = 6,   // an unexpected internal error
 };
 
+// Call inside a catch (...) block: prints the exception being handled as one line
+// "<prefix>: <message>" on stderr and returns its exit status (SceneError: kExitBadScene,
+// BackendUnavailable: kExitNoBackend, FileError: kExitOutput, anything else: kExitInternal).
+int report_failure(const char* prefix);
+
 }  // namespace tr

@@ -133,18 +133,8 @@ int render_command(int argc, char** argv) {
                   {"twinray:version", TWINRAY_VERSION}});
     print_summary(result, paths);
     return kExitOk;
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "twinray: %s\n", e.what());
-    return kExitBadScene;
-  } catch (const BackendUnavailable& e) {
-    std::fprintf(stderr, "twinray: %s\n", e.what());
-    return kExitNoBackend;
-  } catch (const ImageError& e) {
-    std::fprintf(stderr, "twinray: %s\n", e.what());
-    return kExitOutput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "twinray: internal error: %s\n", e.what());
-    return kExitInternal;
+  } catch (...) {
+    return report_failure("twinray");
   }
 }
 

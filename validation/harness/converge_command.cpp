@@ -239,18 +239,8 @@ int converge_command(int argc, char** argv) {
     print_summary(all, a.targets);
     std::printf("converge: wrote %s, %s, %s\n", csv.c_str(), svg.c_str(), tte.c_str());
     return kExitOk;
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "twinray converge: %s\n", e.what());
-    return kExitBadScene;
-  } catch (const BackendUnavailable& e) {
-    std::fprintf(stderr, "twinray converge: %s\n", e.what());
-    return kExitNoBackend;
-  } catch (const FileError& e) {
-    std::fprintf(stderr, "twinray converge: %s\n", e.what());
-    return kExitOutput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "twinray converge: internal error: %s\n", e.what());
-    return kExitInternal;
+  } catch (...) {
+    return report_failure("twinray converge");
   }
 }
 

@@ -294,9 +294,8 @@ int validate_command(int argc, char** argv) {
     std::printf("validate: %s; wrote %s and %s\n", passed ? "PASS" : "FAIL", html.c_str(),
                 json.c_str());
     return passed ? kExitOk : kExitFailed;
-  } catch (const FileError& e) {
-    std::fprintf(stderr, "twinray validate: %s\n", e.what());
-    return kExitOutput;
+  } catch (...) {
+    return report_failure("twinray validate");
   }
 }
 
