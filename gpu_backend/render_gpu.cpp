@@ -29,11 +29,11 @@ double seconds_since(Clock::time_point t) {
 // Samples per pixel of each dispatch. The float Welford inside a batch rounds differently
 // for other batch boundaries, so the schedule depends only on the device type and the image
 // size, never on measured times: the same seed gives the same image on every run. A dispatch
-// holds about 2^20 samples on a CPU device (lavapipe, ~0.5 Msamples/s: ~2 s) and 2^23 on a
-// GPU (H100, ~400 Msamples/s: ~20 ms; a GPU 40x slower still stays under Windows' 2 s
+// holds about 2^20 samples on a CPU device (lavapipe, ~0.5 Msamples/s: ~2 s) and 2^24 on a
+// GPU (H100, ~400 Msamples/s: ~45 ms; a GPU 20x slower still stays under Windows' 2 s
 // watchdog), and at most 256 per pixel (float Welford inside a batch).
 uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
-  const double samples_per_dispatch = device.cpu ? 1048576.0 : 8388608.0;
+  const double samples_per_dispatch = device.cpu ? 1048576.0 : 16777216.0;
   return static_cast<uint32_t>(
       std::clamp(std::floor(samples_per_dispatch / double(pixels)), 1.0, 256.0));
 }
