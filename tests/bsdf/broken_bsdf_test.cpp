@@ -14,16 +14,7 @@ namespace tr::bsdf_suite {
 namespace {
 namespace tv = twinray::validation;
 
-tv::ValidationOptions suite_options() {
-  SuiteSize size = suite_size();
-  tv::ValidationOptions o;
-  o.chi_square = size.chi_square;
-  o.consistency = size.consistency;
-  o.albedo_samples = size.albedo_samples;
-  o.extreme_random_draws = size.extreme_random_draws;
-  o.alpha_per_test = alpha_per_test();
-  return o;
-}
+tv::ValidationOptions suite_options() { return validation_options(suite_size(), alpha_per_test()); }
 
 const std::vector<glm::vec3> kIncident = {tv::direction_from_angles(30.0, 20.0),
                                           tv::direction_from_angles(85.0, 20.0)};

@@ -41,26 +41,29 @@ class StatisticalList {
   std::vector<StatisticalCase> cases;
 
   void directions(const std::string& family, const std::string& name,
-                  std::function<vec3(vec2)> sample, std::function<float(vec3)> pdf) {
-    tv::DirectionSampler s;
-    s.name = name;
-    s.sample = [sample, pdf](const glm::vec2& u) {
-      tv::DirectionSample d;
-      d.w = sample(u);
-      d.pdf = pdf(d.w);
-      return d;
-    };
-    s.pdf = [pdf](const glm::vec3& w) { return pdf(w); };
+                  std::function<vec3(CoreCalls&, vec2)> sample,
+                  std::function<float(CoreCalls&, vec3)> pdf) {
     StatisticalCase c;
     c.family = family;
-    c.directions = s;
+    c.directions = [name, sample, pdf](CoreCalls& calls) {
+      tv::DirectionSampler s;
+      s.name = name;
+      s.sample = [&calls, sample, pdf](const glm::vec2& u) {
+        tv::DirectionSample d;
+        d.w = sample(calls, u);
+        d.pdf = pdf(calls, d.w);
+        return d;
+      };
+      s.pdf = [&calls, pdf](const glm::vec3& w) { return pdf(calls, w); };
+      return s;
+    };
     cases.push_back(c);
   }
 
-  void planar(const std::string& family, tv::PlanarSampler s) {
+  void planar(const std::string& family, std::function<tv::PlanarSampler(CoreCalls&)> s) {
     StatisticalCase c;
     c.family = family;
-    c.planar = s;
+    c.planar = std::move(s);
     cases.push_back(c);
   }
 
@@ -81,25 +84,33 @@ class StatisticalList {
 };
 
 void add_warps(StatisticalList& list) {
-  list.directions("warps", "square_to_cosine_hemisphere", square_to_cosine_hemisphere,
-                  square_to_cosine_hemisphere_pdf);
-  list.directions("warps", "square_to_uniform_sphere", square_to_uniform_sphere,
-                  square_to_uniform_sphere_pdf);
-  list.directions("warps", "square_to_uniform_hemisphere", square_to_uniform_hemisphere,
-                  square_to_uniform_hemisphere_pdf);
-  for (float cos_max : {-0.5f, 0.3f, 0.9f}) {
+  auto warp = [&list](const std::string& name, Warp w, float parameter) {
     list.directions(
-        "warps", "square_to_uniform_cone cos_max=" + fmt(cos_max),
-        [cos_max](vec2 u) { return square_to_uniform_cone(u, cos_max); },
-        [cos_max](vec3 w) { return square_to_uniform_cone_pdf(w, cos_max); });
+        "warps", name,
+        [w, parameter](CoreCalls& calls, vec2 u) { return calls.warp_direction(w, parameter, u); },
+        [w, parameter](CoreCalls& calls, vec3 d) {
+          return calls.warp_direction_pdf(w, parameter, d);
+        });
+  };
+  warp("square_to_cosine_hemisphere", Warp::cosine_hemisphere, 0.0f);
+  warp("square_to_uniform_sphere", Warp::uniform_sphere, 0.0f);
+  warp("square_to_uniform_hemisphere", Warp::uniform_hemisphere, 0.0f);
+  for (float cos_max : {-0.5f, 0.3f, 0.9f}) {
+    warp("square_to_uniform_cone cos_max=" + fmt(cos_max), Warp::uniform_cone, cos_max);
   }
-  tv::PlanarSampler disk;
-  disk.name = "square_to_uniform_disk_concentric";
-  disk.sample = [](const glm::vec2& u) { return square_to_uniform_disk_concentric(u); };
-  disk.pdf = [](const glm::vec2& p) { return square_to_uniform_disk_concentric_pdf(p); };
-  disk.lower = vec2(-1.0f);
-  disk.upper = vec2(1.0f);
-  list.planar("warps", disk);
+  list.planar("warps", [](CoreCalls& calls) {
+    tv::PlanarSampler disk;
+    disk.name = "square_to_uniform_disk_concentric";
+    disk.sample = [&calls](const glm::vec2& u) {
+      return calls.warp_point(Warp::disk_concentric, u);
+    };
+    disk.pdf = [&calls](const glm::vec2& p) {
+      return calls.warp_point_pdf(Warp::disk_concentric, p);
+    };
+    disk.lower = vec2(-1.0f);
+    disk.upper = vec2(1.0f);
+    return disk;
+  });
   // Uniform triangles through barycentrics: density 1/area inside, 0 outside (a point may sit
   // on an edge up to float rounding of the barycentric combination: 1e-6 slack).
   struct Triangle {
@@ -108,23 +119,25 @@ void add_warps(StatisticalList& list) {
   };
   for (Triangle t : {Triangle{"right", vec2(0.0f), vec2(1.0f, 0.0f), vec2(0.0f, 1.0f)},
                      Triangle{"skewed", vec2(0.1f, 0.2f), vec2(0.9f, 0.4f), vec2(0.3f, 0.95f)}}) {
-    tv::PlanarSampler s;
-    s.name = std::string("square_to_uniform_triangle ") + t.name;
-    s.sample = [t](const glm::vec2& u) {
-      vec2 b = square_to_uniform_triangle(u);
-      return (1.0f - b.x - b.y) * t.p0 + b.x * t.p1 + b.y * t.p2;
-    };
-    s.pdf = [t](const glm::vec2& p) {
-      auto cross2 = [](vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; };
-      float area2 = cross2(t.p1 - t.p0, t.p2 - t.p0);
-      float b1 = cross2(p - t.p0, t.p2 - t.p0) / area2;
-      float b2 = cross2(t.p1 - t.p0, p - t.p0) / area2;
-      bool inside = b1 >= -1e-6f && b2 >= -1e-6f && b1 + b2 <= 1.0f + 1e-6f;
-      return inside ? 2.0f / std::abs(area2) : 0.0f;
-    };
-    s.lower = vec2(0.0f);
-    s.upper = vec2(1.0f);
-    list.planar("warps", s);
+    list.planar("warps", [t](CoreCalls& calls) {
+      tv::PlanarSampler s;
+      s.name = std::string("square_to_uniform_triangle ") + t.name;
+      s.sample = [&calls, t](const glm::vec2& u) {
+        vec2 b = calls.warp_point(Warp::triangle, u);
+        return (1.0f - b.x - b.y) * t.p0 + b.x * t.p1 + b.y * t.p2;
+      };
+      s.pdf = [t](const glm::vec2& p) {
+        auto cross2 = [](vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; };
+        float area2 = cross2(t.p1 - t.p0, t.p2 - t.p0);
+        float b1 = cross2(p - t.p0, t.p2 - t.p0) / area2;
+        float b2 = cross2(t.p1 - t.p0, p - t.p0) / area2;
+        bool inside = b1 >= -1e-6f && b2 >= -1e-6f && b1 + b2 <= 1.0f + 1e-6f;
+        return inside ? 2.0f / std::abs(area2) : 0.0f;
+      };
+      s.lower = vec2(0.0f);
+      s.upper = vec2(1.0f);
+      return s;
+    });
   }
 }
 
@@ -138,8 +151,9 @@ void add_microfacet_normals(StatisticalList& list) {
                            " a=" + fmt(alpha.x) + "," + fmt(alpha.y) +
                            (visible ? " visible" : " all") + " wi=60";
         list.directions(
-            "microfacet_normals", name, [d, wi](vec2 u) { return microfacet_sample(d, wi, u); },
-            [d, wi](vec3 m) { return microfacet_pdf(d, wi, m); });
+            "microfacet_normals", name,
+            [d, wi](CoreCalls& calls, vec2 u) { return calls.microfacet_sample(d, wi, u); },
+            [d, wi](CoreCalls& calls, vec3 m) { return calls.microfacet_pdf(d, wi, m); });
       }
     }
   }
@@ -482,11 +496,13 @@ const std::vector<ExtremesCase>& extremes_cases() {
 
 // Per BSDF and incident direction: chi-square, and albedo (on radiance or energy weights) where
 // the model conserves energy.
+std::size_t statistical_test_count(const StatisticalCase& c) {
+  return c.material ? (c.energy_conserving ? 2 : 1) * c.incident.size() : 1;
+}
+
 std::size_t statistical_test_count() {
   std::size_t n = 0;
-  for (const StatisticalCase& c : statistical_cases()) {
-    n += c.material ? (c.energy_conserving ? 2 : 1) * c.incident.size() : 1;
-  }
+  for (const StatisticalCase& c : statistical_cases()) n += statistical_test_count(c);
   return n;
 }
 
@@ -504,63 +520,88 @@ std::vector<std::string> extremes_families() {
   return families_of(all);
 }
 
-tv::Report run_statistical_family(const std::string& family) {
-  SuiteSize size = suite_size();
-  double alpha = alpha_per_test();
+tv::ValidationOptions validation_options(const SuiteSize& size, double alpha) {
+  tv::ValidationOptions o;
+  o.chi_square = size.chi_square;
+  o.consistency = size.consistency;
+  o.albedo_samples = size.albedo_samples;
+  o.extreme_random_draws = size.extreme_random_draws;
+  o.significance = kSignificance;
+  o.alpha_per_test = alpha;
+  return o;
+}
+
+tv::Report run_statistical_case(const StatisticalCase& c, std::size_t number, double alpha,
+                                const SuiteSize& size, CoreCalls& calls) {
+  tv::CheckRunner run = [&calls](const std::function<void()>& check) { calls.run_check(check); };
   tv::Report report;
-  std::uint64_t seed = 0;
-  for (const StatisticalCase& c : statistical_cases()) {
-    ++seed;
-    if (c.family != family) continue;
-    tv::ChiSquareOptions chi = size.chi_square;
-    chi.seed = 0x7715ull * seed;
-    if (c.directions) {
-      report.checks.push_back(tv::report_line(c.directions->name, glm::vec3(0.0f),
-                                              tv::chi_square_directions(*c.directions, chi),
-                                              alpha));
-    }
-    if (c.planar) {
-      report.checks.push_back(tv::report_line(c.planar->name, glm::vec3(0.0f),
-                                              tv::chi_square_planar(*c.planar, chi), alpha));
-    }
-    if (c.material) {
-      Material m = c.material();
-      tv::BsdfUnderTest bsdf = core_bsdf(c.bsdf_name, m);
-      bsdf.energy_conserving = c.energy_conserving && !c.transmissive;
-      tv::ValidationOptions o;
-      o.chi_square = chi;
-      o.consistency = size.consistency;
-      o.consistency.seed = chi.seed + 1;
-      o.albedo_samples = size.albedo_samples;
-      o.extreme_random_draws = size.extreme_random_draws;
-      o.significance = kSignificance;
-      o.alpha_per_test = alpha;
-      report.append(tv::validate_bsdf(bsdf, c.incident, o));
-      if (c.transmissive && c.energy_conserving) {
-        tv::BsdfUnderTest energy = energy_weights(c.bsdf_name + " [energy]", m);
-        std::uint64_t k = 0;
-        for (const glm::vec3& wi : c.incident) {
-          tv::AlbedoResult a =
-              tv::albedo_test(energy, wi, size.albedo_samples, chi.seed + 31 * ++k);
-          report.checks.push_back(tv::report_line(energy.name, wi, a, alpha));
-        }
+  tv::ChiSquareOptions chi = size.chi_square;
+  chi.seed = 0x7715ull * number;
+  if (c.directions) {
+    tv::DirectionSampler sampler = c.directions(calls);
+    tv::ChiSquareResult r;
+    run([&] { r = tv::chi_square_directions(sampler, chi); });
+    report.checks.push_back(tv::report_line(sampler.name, glm::vec3(0.0f), r, alpha));
+  }
+  if (c.planar) {
+    tv::PlanarSampler sampler = c.planar(calls);
+    tv::ChiSquareResult r;
+    run([&] { r = tv::chi_square_planar(sampler, chi); });
+    report.checks.push_back(tv::report_line(sampler.name, glm::vec3(0.0f), r, alpha));
+  }
+  if (c.material) {
+    Material m = c.material();
+    tv::BsdfUnderTest bsdf = core_bsdf(c.bsdf_name, m, calls);
+    bsdf.energy_conserving = c.energy_conserving && !c.transmissive;
+    tv::ValidationOptions o = validation_options(size, alpha);
+    o.chi_square = chi;
+    o.consistency.seed = chi.seed + 1;
+    o.run_check = run;
+    report.append(tv::validate_bsdf(bsdf, c.incident, o));
+    if (c.transmissive && c.energy_conserving) {
+      tv::BsdfUnderTest energy = energy_weights(c.bsdf_name + " [energy]", m, calls);
+      std::uint64_t k = 0;
+      for (const glm::vec3& wi : c.incident) {
+        tv::AlbedoResult a;
+        std::uint64_t seed = chi.seed + 31 * ++k;
+        run([&] { a = tv::albedo_test(energy, wi, size.albedo_samples, seed); });
+        report.checks.push_back(tv::report_line(energy.name, wi, a, alpha));
       }
     }
   }
   return report;
 }
 
-tv::Report run_extremes_family(const std::string& family) {
-  SuiteSize size = suite_size();
+tv::Report run_extremes_case(const ExtremesCase& c, std::size_t number, const SuiteSize& size,
+                             CoreCalls& calls) {
+  tv::BsdfUnderTest bsdf = core_bsdf(c.name, c.material(), calls);
+  tv::ExtremesResult r;
+  calls.run_check([&] {
+    r = tv::extremes_check(bsdf, tv::extreme_incident_directions(), size.extreme_random_draws,
+                           number);
+  });
+  return tv::Report{{tv::report_line(c.name, r)}};
+}
+
+tv::Report run_statistical_family(const std::string& family) {
   tv::Report report;
-  std::vector<glm::vec3> incident = tv::extreme_incident_directions();
-  std::uint64_t seed = 0;
-  for (const ExtremesCase& c : extremes_cases()) {
-    ++seed;
+  std::size_t number = 0;
+  for (const StatisticalCase& c : statistical_cases()) {
+    ++number;
     if (c.family != family) continue;
-    tv::BsdfUnderTest bsdf = core_bsdf(c.name, c.material());
-    report.checks.push_back(tv::report_line(
-        c.name, tv::extremes_check(bsdf, incident, size.extreme_random_draws, seed)));
+    report.append(
+        run_statistical_case(c, number, alpha_per_test(), suite_size(), cpu_core_calls()));
+  }
+  return report;
+}
+
+tv::Report run_extremes_family(const std::string& family) {
+  tv::Report report;
+  std::size_t number = 0;
+  for (const ExtremesCase& c : extremes_cases()) {
+    ++number;
+    if (c.family != family) continue;
+    report.append(run_extremes_case(c, number, suite_size(), cpu_core_calls()));
   }
   return report;
 }

@@ -5,19 +5,21 @@
 #define TWINRAY_TESTS_BSDF_CASES_H
 
 #include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/scene_types.h"
+#include "core_calls.h"
+#include "suite_size.h"
 #include "twinray_validation.h"
 
 namespace tr::bsdf_suite {
 
+// A case is a recipe over CoreCalls, so the same case validates either build of core/.
 struct StatisticalCase {
   std::string family;
-  std::optional<twinray::validation::DirectionSampler> directions;
-  std::optional<twinray::validation::PlanarSampler> planar;
+  std::function<twinray::validation::DirectionSampler(CoreCalls&)> directions;
+  std::function<twinray::validation::PlanarSampler(CoreCalls&)> planar;
   // A core BSDF, validated at `incident`; built when run (roughplastic's tables are costly).
   std::string bsdf_name;
   std::function<Material()> material;
@@ -41,14 +43,27 @@ struct ExtremesCase {
 const std::vector<StatisticalCase>& statistical_cases();
 const std::vector<ExtremesCase>& extremes_cases();
 
-// Statistical tests (p-values) over all statistical cases, and the Šidák level of each.
+// Statistical tests (p-values) of one case, over all statistical cases, and the Šidák level of
+// each test over all cases.
+std::size_t statistical_test_count(const StatisticalCase& c);
 std::size_t statistical_test_count();
 double alpha_per_test();
 
 std::vector<std::string> statistical_families();
 std::vector<std::string> extremes_families();
 
-// Runs every case of a family and returns its report.
+// The options of validate_bsdf at `size`, each statistical test at level `alpha`.
+twinray::validation::ValidationOptions validation_options(const SuiteSize& size, double alpha);
+
+// Runs one case with core/ reached through `calls`, each statistical test at level `alpha`.
+// `number` is the case's position in its list, from 1: it seeds the case.
+twinray::validation::Report run_statistical_case(const StatisticalCase& c, std::size_t number,
+                                                 double alpha, const SuiteSize& size,
+                                                 CoreCalls& calls);
+twinray::validation::Report run_extremes_case(const ExtremesCase& c, std::size_t number,
+                                              const SuiteSize& size, CoreCalls& calls);
+
+// Runs every case of a family on the C++ build of core/ and returns its report.
 twinray::validation::Report run_statistical_family(const std::string& family);
 twinray::validation::Report run_extremes_family(const std::string& family);
 

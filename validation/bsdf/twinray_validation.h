@@ -243,6 +243,13 @@ struct Report {
   void append(const Report& other);
 };
 
+/// Runs one check of validate_bsdf: it must call `check` at least once and may call it again;
+/// the results of the last call are kept. A memoizing batch evaluator uses it to evaluate the
+/// callables somewhere else (e.g. on a GPU, tests/bsdf_gpu): each call records the arguments it
+/// has no value for yet, the runner evaluates them in one batch and repeats the check until a
+/// call finds every value in its cache. Empty: each check is called once.
+using CheckRunner = std::function<void(const std::function<void()>& check)>;
+
 /// Options of validate_bsdf.
 struct ValidationOptions {
   ChiSquareOptions chi_square;
@@ -254,6 +261,8 @@ struct ValidationOptions {
   /// Per-test level; 0 = Šidák over this call's statistical tests (2 per incident direction,
   /// or 1 without eval). Set it when the call is one part of a larger suite.
   double alpha_per_test = 0.0;
+  /// Wraps every chi-square, consistency, albedo and extremes check (see CheckRunner).
+  CheckRunner run_check;
 };
 
 /// Number of statistical tests validate_bsdf runs (used to apply Šidák across several calls).

@@ -181,36 +181,43 @@ bool bsdf_available(const Material& m) { return (bsdf_flags(m, kUv) & ~BSDF_NULL
 
 bool bsdf_type_available(uint type) { return bsdf_available(blank(type)); }
 
-twinray::validation::BsdfUnderTest core_bsdf(const std::string& name, const Material& m) {
+namespace {
+
+twinray::validation::BsdfSample validation_sample(const BsdfSample& s, float weight_scale) {
+  twinray::validation::BsdfSample r;
+  r.wo = s.wo;
+  r.pdf = s.pdf;
+  r.weight = s.weight * weight_scale;
+  r.delta = (s.lobe & BSDF_DELTA) != 0u;
+  r.lobe = s.lobe;
+  return r;
+}
+
+}  // namespace
+
+twinray::validation::BsdfUnderTest core_bsdf(const std::string& name, const Material& m,
+                                             CoreCalls& calls) {
   twinray::validation::BsdfUnderTest b;
   b.name = name;
-  b.sample = [m](const glm::vec3& wi, float u1, const glm::vec2& u2) {
-    BsdfSample s = bsdf_sample(m, kUv, wi, u1, u2);
-    twinray::validation::BsdfSample r;
-    r.wo = s.wo;
-    r.pdf = s.pdf;
-    r.weight = s.weight;
-    r.delta = (s.lobe & BSDF_DELTA) != 0u;
-    r.lobe = s.lobe;
-    return r;
+  b.sample = [m, &calls](const glm::vec3& wi, float u1, const glm::vec2& u2) {
+    return validation_sample(calls.bsdf_sample(m, kUv, wi, u1, u2), 1.0f);
   };
-  b.pdf = [m](const glm::vec3& wi, const glm::vec3& wo) { return bsdf_pdf(m, kUv, wi, wo); };
-  b.eval = [m](const glm::vec3& wi, const glm::vec3& wo) { return bsdf_eval(m, kUv, wi, wo); };
+  b.pdf = [m, &calls](const glm::vec3& wi, const glm::vec3& wo) {
+    return calls.bsdf_pdf(m, kUv, wi, wo);
+  };
+  b.eval = [m, &calls](const glm::vec3& wi, const glm::vec3& wo) {
+    return calls.bsdf_eval(m, kUv, wi, wo);
+  };
   b.eval_includes_cosine = true;
   return b;
 }
 
-twinray::validation::BsdfUnderTest energy_weights(const std::string& name, const Material& m) {
-  twinray::validation::BsdfUnderTest b = core_bsdf(name, m);
-  b.sample = [m](const glm::vec3& wi, float u1, const glm::vec2& u2) {
-    BsdfSample s = bsdf_sample(m, kUv, wi, u1, u2);
-    twinray::validation::BsdfSample r;
-    r.wo = s.wo;
-    r.pdf = s.pdf;
-    r.weight = s.weight * (s.eta * s.eta);
-    r.delta = (s.lobe & BSDF_DELTA) != 0u;
-    r.lobe = s.lobe;
-    return r;
+twinray::validation::BsdfUnderTest energy_weights(const std::string& name, const Material& m,
+                                                  CoreCalls& calls) {
+  twinray::validation::BsdfUnderTest b = core_bsdf(name, m, calls);
+  b.sample = [m, &calls](const glm::vec3& wi, float u1, const glm::vec2& u2) {
+    BsdfSample s = calls.bsdf_sample(m, kUv, wi, u1, u2);
+    return validation_sample(s, s.eta * s.eta);
   };
   return b;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/scene_types.h"
+#include "core_calls.h"
 #include "twinray_validation.h"
 
 namespace tr::bsdf_suite {
@@ -51,13 +52,15 @@ Material masked(Material m, float opacity);
 bool bsdf_available(const Material& m);
 bool bsdf_type_available(uint type);
 
-// sample/pdf/eval of bsdf_sample/bsdf_pdf/bsdf_eval at uv = (0.5, 0.5); delta = a
-// BSDF_DELTA lobe (delta reflection/transmission or the mask's null lobe).
-twinray::validation::BsdfUnderTest core_bsdf(const std::string& name, const Material& m);
+// sample/pdf/eval of bsdf_sample/bsdf_pdf/bsdf_eval at uv = (0.5, 0.5), through `calls`; delta
+// = a BSDF_DELTA lobe (delta reflection/transmission or the mask's null lobe).
+twinray::validation::BsdfUnderTest core_bsdf(const std::string& name, const Material& m,
+                                             CoreCalls& calls);
 
 // The same sampler with energy (importance) weights: transmitted radiance weights carry
 // (eta_i / eta_t)^2 = 1 / eta^2 (Veach 1997, §5.2), which the albedo bound must not count.
-twinray::validation::BsdfUnderTest energy_weights(const std::string& name, const Material& m);
+twinray::validation::BsdfUnderTest energy_weights(const std::string& name, const Material& m,
+                                                  CoreCalls& calls);
 
 }  // namespace tr::bsdf_suite
 

@@ -31,6 +31,9 @@ uint add_texture(Texture t, const std::vector<vec4>& new_texels) {
   return uint(textures.size() - 1);
 }
 
+const std::vector<Texture>& local_textures() { return textures; }
+const std::vector<vec4>& local_texels() { return texels; }
+
 }  // namespace bsdf_suite
 
 SceneGlobals scene_globals() { out_of_scope("scene_globals"); }

@@ -12,6 +12,10 @@ namespace tr::bsdf_suite {
 // Appends the texels, points t.texel_offset at them and returns the new texture's index.
 uint add_texture(Texture t, const std::vector<vec4>& texels);
 
+// Everything registered so far (a GPU copy of the store uploads these).
+const std::vector<Texture>& local_textures();
+const std::vector<vec4>& local_texels();
+
 }  // namespace tr::bsdf_suite
 
 #endif
