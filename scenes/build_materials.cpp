@@ -67,6 +67,20 @@ void microfacet_flags(Node& node, Material& m) {
 
 }  // namespace
 
+void SceneBuilder::microfacet_roughness(Node& n, Material& m, uint slot_u, uint slot_v) {
+  microfacet_flags(n, m);
+  if (has_property(n, "alpha_u") || has_property(n, "alpha_v")) {
+    if (has_property(n, "alpha"))
+      fail(find_property(n, "alpha")->loc, describe(n), ": give either alpha or alpha_u/alpha_v");
+    if (!has_property(n, "alpha_u") || !has_property(n, "alpha_v"))
+      fail(n.loc, describe(n), ": alpha_u and alpha_v must be given together");
+    m.param[slot_u] = textured(n, "alpha_u", glm::dvec3(0.1), true);
+    m.param[slot_v] = textured(n, "alpha_v", glm::dvec3(0.1), true);
+  } else {
+    m.param[slot_u] = m.param[slot_v] = textured(n, "alpha", glm::dvec3(0.1), true);
+  }
+}
+
 void store_rows(const glm::dmat4& m, vec4 rows[3]) {
   for (int r = 0; r < 3; ++r)
     rows[r] = vec4(float(m[0][r]), float(m[1][r]), float(m[2][r]), float(m[3][r]));
@@ -283,20 +297,7 @@ Material SceneBuilder::build_material(Node& n) {
     m.param[CONDUCTOR_SPECULAR_REFLECTANCE] =
         textured(n, "specular_reflectance", glm::dvec3(1.0), false);
     if (type == "roughconductor") {
-      microfacet_flags(n, m);
-      bool aniso = has_property(n, "alpha_u") || has_property(n, "alpha_v");
-      if (aniso) {
-        if (has_property(n, "alpha"))
-          fail(find_property(n, "alpha")->loc, describe(n),
-               ": give either alpha or alpha_u/alpha_v");
-        if (!has_property(n, "alpha_u") || !has_property(n, "alpha_v"))
-          fail(n.loc, describe(n), ": alpha_u and alpha_v must be given together");
-        m.param[CONDUCTOR_ALPHA_U] = textured(n, "alpha_u", glm::dvec3(0.1), true);
-        m.param[CONDUCTOR_ALPHA_V] = textured(n, "alpha_v", glm::dvec3(0.1), true);
-      } else {
-        m.param[CONDUCTOR_ALPHA_U] = m.param[CONDUCTOR_ALPHA_V] =
-            textured(n, "alpha", glm::dvec3(0.1), true);
-      }
+      microfacet_roughness(n, m, CONDUCTOR_ALPHA_U, CONDUCTOR_ALPHA_V);
     }
   } else if (type == "dielectric" || type == "roughdielectric" || type == "thindielectric") {
     m = empty_material(type == "dielectric"        ? BSDF_DIELECTRIC
@@ -311,20 +312,7 @@ Material SceneBuilder::build_material(Node& n) {
         textured(n, "specular_transmittance", glm::dvec3(1.0), false);
     if (type == "roughdielectric") {
       if (int_ior == ext_ior) fail(n.loc, describe(n), ": int_ior and ext_ior must differ");
-      microfacet_flags(n, m);
-      bool aniso = has_property(n, "alpha_u") || has_property(n, "alpha_v");
-      if (aniso) {
-        if (has_property(n, "alpha"))
-          fail(find_property(n, "alpha")->loc, describe(n),
-               ": give either alpha or alpha_u/alpha_v");
-        if (!has_property(n, "alpha_u") || !has_property(n, "alpha_v"))
-          fail(n.loc, describe(n), ": alpha_u and alpha_v must be given together");
-        m.param[DIELECTRIC_ALPHA_U] = textured(n, "alpha_u", glm::dvec3(0.1), true);
-        m.param[DIELECTRIC_ALPHA_V] = textured(n, "alpha_v", glm::dvec3(0.1), true);
-      } else {
-        m.param[DIELECTRIC_ALPHA_U] = m.param[DIELECTRIC_ALPHA_V] =
-            textured(n, "alpha", glm::dvec3(0.1), true);
-      }
+      microfacet_roughness(n, m, DIELECTRIC_ALPHA_U, DIELECTRIC_ALPHA_V);
     }
   } else if (type == "plastic" || type == "roughplastic") {
     m = empty_material(type == "plastic" ? BSDF_PLASTIC : BSDF_ROUGHPLASTIC);

@@ -48,6 +48,9 @@ class SceneBuilder {
   uint default_material();
   Material build_material(Node& bsdf);
   Material build_principled(Node& bsdf);
+  // `distribution`, `sample_visible` and `alpha` or `alpha_u`/`alpha_v` (textures allowed) of
+  // roughconductor and roughdielectric, Mitsuba's defaults (beckmann, true, 0.1).
+  void microfacet_roughness(Node& bsdf, Material& m, uint slot_u, uint slot_v);
   TexturedValue roughplastic_table(const Material& m);
   double textured_mean(const TexturedValue& v) const;
   // A BSDF parameter that may be a texture. `scalar`: Mitsuba reads it with eval_1 (one value).
