@@ -1,0 +1,44 @@
+#include "lockstep_check.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "cpu_backend/render_cpu.h"
+#include "gpu_backend/render_gpu.h"
+#include "validation/image/lockstep.h"
+
+namespace tr {
+
+namespace {
+
+RgbImage mean_image(const RenderResult& r) {
+  RgbImage img;
+  img.width = int(r.width);
+  img.height = int(r.height);
+  img.rgb = r.mean;
+  return img;
+}
+
+}  // namespace
+
+void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed) {
+  RenderOptions options;
+  options.spp = spp;
+  options.seed = seed;
+  RenderResult cpu = render_cpu(scene, options);
+  RenderResult gpu = render_gpu(scene, options);
+  LockstepResult r = lockstep_compare(mean_image(gpu), mean_image(cpu));
+  std::printf(
+      "%s, %u spp: %.6f of pixels within tolerance, %zu systematic, %zu clustered windows\n",
+      label.c_str(), spp, r.fraction_within, r.systematic_cells, r.clustered_windows);
+  for (const LockstepPixel& p : r.worst)
+    if (p.excess > 1.0)
+      std::printf("  (%d, %d) gpu %.7g %.7g %.7g cpu %.7g %.7g %.7g excess %.3g\n", p.x, p.y,
+                  p.a[0], p.a[1], p.a[2], p.b[0], p.b[1], p.b[2], p.excess);
+  EXPECT_TRUE(r.passed) << label << ", " << spp << " spp: " << r.fraction_within
+                        << " within tolerance, " << r.systematic_cells << " systematic, "
+                        << r.clustered_windows << " clustered windows";
+}
+
+}  // namespace tr
