@@ -91,9 +91,14 @@ INLINE float fresnel_diffuse_reflectance(float eta) {
   return 0.0636f / eta + eta * (eta * -1.4399f + 0.7099f) + 0.6681f;
 }
 
-// Mirror direction about the normal (+z) and about a microfacet normal m.
+// Mirror direction about the normal (+z) and about a microfacet normal m. The sampled direction
+// is PRECISE (core/prelude.h): pdf() and eval() of it must see the rounded direction returned,
+// not a half vector the shader compiler recovered algebraically from wi + wo.
 INLINE vec3 reflect_local(vec3 wi) { return vec3(-wi.x, -wi.y, wi.z); }
-INLINE vec3 reflect_about(vec3 wi, vec3 m) { return 2.0f * dot(wi, m) * m - wi; }
+INLINE vec3 reflect_about(vec3 wi, vec3 m) {
+  PRECISE vec3 wo = 2.0f * dot(wi, m) * m - wi;
+  return wo;
+}
 
 // Refraction about +z / about m, given cos_theta_t and eta_ti from fresnel_dielectric
 // (Walter et al. 2007, eq. 40).
@@ -101,7 +106,8 @@ INLINE vec3 refract_local(vec3 wi, float cos_theta_t, float eta_ti) {
   return vec3(-eta_ti * wi.x, -eta_ti * wi.y, cos_theta_t);
 }
 INLINE vec3 refract_about(vec3 wi, vec3 m, float cos_theta_t, float eta_ti) {
-  return m * (dot(wi, m) * eta_ti + cos_theta_t) - wi * eta_ti;
+  PRECISE vec3 wo = m * (dot(wi, m) * eta_ti + cos_theta_t) - wi * eta_ti;
+  return wo;
 }
 
 TR_NAMESPACE_END

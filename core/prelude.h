@@ -18,6 +18,7 @@
 #define INLINE inline
 #define OUT(T) T&
 #define INOUT(T) T&
+#define PRECISE
 
 TR_NAMESPACE_BEGIN
 using namespace glm;
@@ -31,8 +32,17 @@ TR_NAMESPACE_END
 #define INLINE
 #define OUT(T) out T
 #define INOUT(T) inout T
+#define PRECISE precise
 
 #endif
+
+// PRECISE marks a value the shader compiler must compute exactly as written (GLSL `precise`,
+// SPIR-V NoContraction): no fused multiply-add and no algebraic rewriting across its uses. A
+// sampled direction that is then handed to pdf()/eval() needs it: otherwise the compiler may
+// simplify e.g. wi + (2 (wi.m) m - wi) to 2 (wi.m) m and evaluate the density at the exact
+// half vector instead of at the rounded direction returned, which at grazing angles (wi + wo
+// nearly cancelling) differs from pdf(wi, wo) by far more than rounding (found by tests/bsdf_gpu
+// on lavapipe). C++ compilers do not rewrite float algebra without fast-math flags.
 
 // Feature guards: a backend that specializes its code to a scene (the GPU pipeline, through
 // specialization constants in shaders/features.glsl) defines these before including core/;

@@ -36,4 +36,15 @@ SuiteSize suite_size() {
   return s;
 }
 
+SuiteSize gpu_suite_size() {
+  SuiteSize s = suite_size();
+  if (full_size()) return s;
+  s.chi_square.sample_count /= 4;
+  s.chi_square.integration_tolerance = 0.1 / double(s.chi_square.sample_count);
+  s.consistency.sample_count /= 4;
+  s.consistency.random_pairs /= 4;
+  s.albedo_samples /= 4;
+  return s;
+}
+
 }  // namespace tr::bsdf_suite

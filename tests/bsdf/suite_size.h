@@ -20,6 +20,11 @@ struct SuiteSize {
 
 SuiteSize suite_size();
 
+// The size of the same suite on the GLSL build of core/ (tests/bsdf_gpu): the full size is
+// suite_size()'s, the fast size draws a quarter of its samples, since every value comes from
+// lavapipe and each check runs about three times (tests/bsdf_gpu/gpu_core_calls.h).
+SuiteSize gpu_suite_size();
+
 // Overall significance of the suite: a correct implementation fails any statistical test with
 // probability 1%; every test runs at the Šidák level over all of them.
 constexpr double kSignificance = 0.01;

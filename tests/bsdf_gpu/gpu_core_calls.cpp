@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -75,29 +76,18 @@ static_assert(uint(Warp::cosine_hemisphere) == PROBE_WARP_COSINE_HEMISPHERE &&
                   uint(Warp::triangle) == PROBE_WARP_TRIANGLE,
               "probe.h and tests/bsdf/core_calls.h number the warps alike");
 
-void Lockstep::merge(const Lockstep& o) {
-  if (non_finite == 0 && o.non_finite > 0) first_non_finite = o.first_non_finite;
-  queries += o.queries;
-  batches += o.batches;
-  max_passes = std::max(max_passes, o.max_passes);
-  lobe_mismatch += o.lobe_mismatch;
-  max_direction = std::max(max_direction, o.max_direction);
-  max_pdf = std::max(max_pdf, o.max_pdf);
-  max_value = std::max(max_value, o.max_value);
-  beyond_1e3 += o.beyond_1e3;
-  non_finite += o.non_finite;
-  device_seconds += o.device_seconds;
-}
-
 std::string Lockstep::summary() const {
   std::ostringstream s;
-  s << queries << " device evaluations in " << batches << " batches (" << device_seconds
-    << " s on the device, at most " << max_passes << " runs per check); GPU vs C++ at the same "
+  s << queries << " device evaluations in " << batches << " batches (" << immediate
+    << " one by one; " << device_seconds << " s on the device; at most " << max_runs
+    << " runs per check); GPU vs C++ at the same "
     << "arguments: max |d direction| " << max_direction << ", max rel d pdf " << max_pdf
     << ", max rel d weight/eval " << max_value << ", " << beyond_1e3
     << " values off by > 1e-3 relative, " << lobe_mismatch << " samples of another lobe, "
     << non_finite << " NaN/Inf";
   if (non_finite > 0) s << " (first: " << first_non_finite << ")";
+  if (max_pdf > 0.0) s << "\n  largest pdf difference: " << worst_pdf;
+  if (max_value > 0.0) s << "\n  largest weight/eval difference: " << worst_value;
   return s.str();
 }
 
@@ -120,39 +110,58 @@ bool same(const ProbeQuery& a, const ProbeQuery& b) { return std::memcmp(&a, &b,
 
 }  // namespace
 
+// A table slot holds (upper 32 bits of the query's hash) << 32 | position; the tag spares most
+// probes a look at the query itself.
 uint32_t GpuCoreCalls::find(const ProbeQuery& q) const {
   if (table_.empty()) return kNone;
   const std::size_t mask = table_.size() - 1;
-  for (std::size_t slot = hash_of(q) & mask;; slot = (slot + 1) & mask) {
-    uint32_t p = table_[slot];
-    if (p == kNone || same(queries_[p], q)) return p;
+  const uint64_t h = hash_of(q);
+  const uint32_t tag = uint32_t(h >> 32);
+  for (std::size_t slot = h & mask;; slot = (slot + 1) & mask) {
+    uint64_t e = table_[slot];
+    if (e == kEmptySlot) return kNone;
+    uint32_t p = uint32_t(e);
+    if (uint32_t(e >> 32) == tag && same(queries_[p], q)) return p;
   }
 }
 
-void GpuCoreCalls::insert(uint32_t position) {
+void GpuCoreCalls::index(std::size_t first, std::size_t last) {
+  // Hashes first, then inserts with the slot of a later query prefetched: the table is far
+  // larger than the caches.
+  constexpr std::size_t kAhead = 16;
+  std::vector<uint64_t> hashes(last - first);
+  for (std::size_t p = first; p < last; ++p) hashes[p - first] = hash_of(queries_[p]);
   const std::size_t mask = table_.size() - 1;
-  for (std::size_t slot = hash_of(queries_[position]) & mask;; slot = (slot + 1) & mask) {
-    uint32_t& p = table_[slot];
-    if (p == kNone) {
-      p = position;
-      return;
+  for (std::size_t i = 0; i < hashes.size(); ++i) {
+    if (i + kAhead < hashes.size()) __builtin_prefetch(&table_[hashes[i + kAhead] & mask], 1);
+    const uint32_t position = uint32_t(first + i);
+    const uint32_t tag = uint32_t(hashes[i] >> 32);
+    for (std::size_t slot = hashes[i] & mask;; slot = (slot + 1) & mask) {
+      uint64_t& e = table_[slot];
+      if (e == kEmptySlot) {
+        e = uint64_t(tag) << 32 | position;
+        break;
+      }
+      // A duplicate keeps the first.
+      if (uint32_t(e >> 32) == tag && same(queries_[uint32_t(e)], queries_[position])) break;
     }
-    if (same(queries_[p], queries_[position])) return;  // a duplicate keeps the first
   }
 }
 
 template <typename Cpu>
 ProbeResult GpuCoreCalls::query(const ProbeQuery& q, Cpu cpu) {
-  const std::size_t call = tape_.size();
-  if (call < previous_tape_.size()) {
-    uint32_t p = previous_tape_[call];
+  if (cursor_ < previous_tape_.size()) {
+    uint32_t p = previous_tape_[cursor_];
     if (p < queries_.size() && same(queries_[p], q)) {
+      ++cursor_;
       tape_.push_back(p);
       return results_[p];
     }
   }
   uint32_t p = find(q);
   if (p != kNone) {
+    // Calls were added or dropped since the previous run: continue its tape after this call.
+    if (tape_index_[p] != kNone) cursor_ = tape_index_[p] + 1;
     tape_.push_back(p);
     return results_[p];
   }
@@ -160,7 +169,10 @@ ProbeResult GpuCoreCalls::query(const ProbeQuery& q, Cpu cpu) {
   tape_.push_back(uint32_t(queries_.size() + misses_.size()));
   misses_.push_back(q);
   predictions_.push_back(cpu());
-  return predictions_.back();
+  if (!immediate_) return predictions_.back();
+  ++lockstep_.immediate;
+  evaluate_misses();
+  return results_.back();
 }
 
 uint GpuCoreCalls::material_index(const Material& m) {
@@ -244,7 +256,11 @@ vec3 GpuCoreCalls::bsdf_eval(const Material& m, vec2 uv, vec3 wi, vec3 wo) {
 void GpuCoreCalls::evaluate_misses() {
   auto start = std::chrono::steady_clock::now();
   ProbeScene scene{&materials_, &bsdf_suite::local_textures(), &bsdf_suite::local_texels()};
-  std::vector<ProbeResult> results = device_.evaluate(misses_, scene);
+  const std::size_t first = queries_.size();
+  if (first + misses_.size() >= kNone) throw std::runtime_error("too many queries in one check");
+  results_.resize(first + misses_.size());
+  device_.evaluate(misses_, scene, results_.data() + first);
+  const ProbeResult* results = results_.data() + first;
   lockstep_.device_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   lockstep_.queries += misses_.size();
@@ -256,9 +272,15 @@ void GpuCoreCalls::evaluate_misses() {
     if (!finite(gpu)) {
       if (lockstep_.non_finite++ == 0) lockstep_.first_non_finite = describe(q);
     }
-    auto note = [this](double& max, double d) {
-      max = std::max(max, d);
+    auto note = [&](double& max, std::string& worst, float g, float c) {
+      double d = relative(g, c);
       if (d > 1e-3) ++lockstep_.beyond_1e3;
+      if (d > max) {
+        max = d;
+        std::ostringstream s;
+        s << std::setprecision(9) << describe(q) << ": GPU " << g << ", C++ " << c;
+        worst = s.str();
+      }
     };
     bool sampled = q.op == PROBE_WARP_DIRECTION || q.op == PROBE_WARP_POINT ||
                    q.op == PROBE_MICROFACET_SAMPLE || q.op == PROBE_BSDF_SAMPLE;
@@ -270,28 +292,25 @@ void GpuCoreCalls::evaluate_misses() {
       for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(gpu.wo_pdf[c] - cpu.wo_pdf[c])));
       lockstep_.max_direction = std::max(lockstep_.max_direction, d);
     }
-    if (q.op == PROBE_BSDF_SAMPLE && gpu.lobe == cpu.lobe) {
-      note(lockstep_.max_pdf, relative(gpu.wo_pdf.w, cpu.wo_pdf.w));
+    Lockstep& l = lockstep_;
+    if ((q.op == PROBE_BSDF_SAMPLE && gpu.lobe == cpu.lobe) ||
+        (!sampled && q.op != PROBE_BSDF_EVAL))
+      note(l.max_pdf, l.worst_pdf, gpu.wo_pdf.w, cpu.wo_pdf.w);
+    if ((q.op == PROBE_BSDF_SAMPLE && gpu.lobe == cpu.lobe) || q.op == PROBE_BSDF_EVAL) {
       for (int c = 0; c < 3; ++c)
-        note(lockstep_.max_value, relative(gpu.value_eta[c], cpu.value_eta[c]));
-    } else if (q.op == PROBE_BSDF_EVAL) {
-      for (int c = 0; c < 3; ++c)
-        note(lockstep_.max_value, relative(gpu.value_eta[c], cpu.value_eta[c]));
-    } else if (!sampled) {
-      note(lockstep_.max_pdf, relative(gpu.wo_pdf.w, cpu.wo_pdf.w));
+        note(l.max_value, l.worst_value, gpu.value_eta[c], cpu.value_eta[c]);
     }
   }
-  const std::size_t first = queries_.size();
-  if (first + misses_.size() >= kNone) throw std::runtime_error("too many queries in one check");
   queries_.insert(queries_.end(), misses_.begin(), misses_.end());
-  results_.insert(results_.end(), results.begin(), results.end());
+  misses_.clear();
+  predictions_.clear();
   if (queries_.size() * 2 > table_.size()) {
     std::size_t size = 1024;
     while (size < queries_.size() * 4) size *= 2;
-    table_.assign(size, kNone);
-    for (std::size_t p = 0; p < queries_.size(); ++p) insert(uint32_t(p));
+    table_.assign(size, kEmptySlot);
+    index(0, queries_.size());
   } else {
-    for (std::size_t p = first; p < queries_.size(); ++p) insert(uint32_t(p));
+    index(first, queries_.size());
   }
 }
 
@@ -302,26 +321,27 @@ void GpuCoreCalls::run_check(const std::function<void()>& check) {
     table_.clear();
     tape_.clear();
     previous_tape_.clear();
-    misses_.clear();
-    predictions_.clear();
+    tape_index_.clear();
   };
-  for (int pass = 1;; ++pass) {
+  for (int run = 1;; ++run) {
     std::swap(tape_, previous_tape_);
     tape_.clear();
-    misses_.clear();
-    predictions_.clear();
-    check();
+    cursor_ = 0;
+    tape_index_.assign(queries_.size(), kNone);
+    for (std::size_t i = previous_tape_.size(); i-- > 0;)
+      tape_index_[previous_tape_[i]] = uint32_t(i);
+    immediate_ = run > kSpeculativeRuns;
+    try {
+      check();
+    } catch (...) {
+      forget();
+      throw;
+    }
     if (misses_.empty()) {
       // This run took every value from the device: its results stand.
-      lockstep_.max_passes = std::max(lockstep_.max_passes, std::size_t(pass));
+      lockstep_.max_runs = std::max(lockstep_.max_runs, std::size_t(run));
       forget();
       return;
-    }
-    if (pass == kMaxPasses) {
-      std::size_t missed = misses_.size();
-      forget();
-      throw std::runtime_error("a check still asked for " + std::to_string(missed) +
-                               " new values after " + std::to_string(kMaxPasses) + " runs");
     }
     evaluate_misses();
   }

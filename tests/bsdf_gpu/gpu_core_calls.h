@@ -21,18 +21,19 @@ namespace tr::bsdf_gpu {
 // How the device's values compare with the C++ build's at the same arguments (every batched
 // query is computed both ways), and what evaluating them cost.
 struct Lockstep {
-  std::size_t queries = 0;        // evaluated on the device
-  std::size_t batches = 0;        // device dispatches
-  std::size_t max_passes = 0;     // most runs one check needed
-  std::size_t lobe_mismatch = 0;  // samples whose lobe (or success) differs
-  double max_direction = 0.0;     // max |component difference| of sampled directions/points
-  double max_pdf = 0.0;           // max relative difference of densities
-  double max_value = 0.0;         // max relative difference of weights and evals
-  std::size_t beyond_1e3 = 0;     // values whose relative difference exceeds 1e-3
-  std::size_t non_finite = 0;     // NaN or Inf in a device result
-  std::string first_non_finite;   // the query behind the first one
-  double device_seconds = 0.0;    // in ProbeDevice::evaluate
-  void merge(const Lockstep& other);
+  std::size_t queries = 0;             // evaluated on the device
+  std::size_t batches = 0;             // device dispatches
+  std::size_t max_runs = 0;            // most runs one check needed
+  std::size_t immediate = 0;           // evaluated one by one, in a run past kSpeculativeRuns
+  std::size_t lobe_mismatch = 0;       // samples whose lobe (or success) differs
+  double max_direction = 0.0;          // max |component difference| of sampled directions/points
+  double max_pdf = 0.0;                // max relative difference of densities
+  double max_value = 0.0;              // max relative difference of weights and evals
+  std::string worst_pdf, worst_value;  // the queries behind the two maxima
+  std::size_t beyond_1e3 = 0;          // values whose relative difference exceeds 1e-3
+  std::size_t non_finite = 0;          // NaN or Inf in a device result
+  std::string first_non_finite;        // the query behind the first one
+  double device_seconds = 0.0;         // in ProbeDevice::evaluate
   std::string summary() const;
 };
 
@@ -50,20 +51,24 @@ class GpuCoreCalls : public bsdf_suite::CoreCalls {
   float bsdf_pdf(const Material& m, vec2 uv, vec3 wi, vec3 wo) override;
   vec3 bsdf_eval(const Material& m, vec2 uv, vec3 wi, vec3 wo) override;
 
-  // Repeats `check` until a run finds every value in the cache (at most kMaxPasses runs).
+  // Repeats `check` until a run finds every value in the cache. Adaptive checks (the chi-square
+  // quadrature refines where the values say so) may keep asking for new values run after run;
+  // past kSpeculativeRuns, each miss is evaluated on the device at once instead of predicted,
+  // so that run completes on device values alone.
   void run_check(const std::function<void()>& check) override;
-  static constexpr int kMaxPasses = 8;
+  static constexpr int kSpeculativeRuns = 4;
 
   // What was measured since the last call; resets it.
   Lockstep take_lockstep();
 
  private:
   static constexpr uint32_t kNone = 0xffffffffu;
+  static constexpr uint64_t kEmptySlot = ~uint64_t(0);
   // The device's value of q; on a miss, records q and returns cpu(), the C++ build's value.
   template <typename Cpu>
   ProbeResult query(const ProbeQuery& q, Cpu cpu);
   uint32_t find(const ProbeQuery& q) const;
-  void insert(uint32_t position);
+  void index(std::size_t first, std::size_t last);  // adds queries_[first, last) to table_
   uint material_index(const Material& m);
   void evaluate_misses();
 
@@ -72,13 +77,16 @@ class GpuCoreCalls : public bsdf_suite::CoreCalls {
   std::map<std::string, uint> material_indices_;  // by the record's bytes
 
   // The values of the current check: every query evaluated on the device and its result,
-  // found through an open-addressing table of positions (kNone = empty).
+  // found through an open-addressing table of positions.
   std::vector<ProbeQuery> queries_;
   std::vector<ProbeResult> results_;
-  std::vector<uint32_t> table_;
-  // A check calls in much the same order on every run: the position each call found (or will
-  // find, for a miss) on the previous run is tried first, without hashing.
+  std::vector<uint64_t> table_;
+  // A check calls in much the same order on every run: the positions the calls of the
+  // previous run found (or will find, for misses) are tried in order first, without hashing.
   std::vector<uint32_t> tape_, previous_tape_;
+  std::vector<uint32_t> tape_index_;  // position -> its first call in previous_tape_
+  std::size_t cursor_ = 0;            // the next call of previous_tape_ to try
+  bool immediate_ = false;            // evaluate misses at once (see run_check)
   std::vector<ProbeQuery> misses_;
   std::vector<ProbeResult> predictions_;  // the C++ build's values of misses_
   Lockstep lockstep_;

@@ -87,14 +87,14 @@ TEST_P(GpuFamily, PassesAtSidakLevelOnDevice) {
   for (const StatisticalCase& c : statistical_cases()) {
     ++number;
     if (c.family == family)
-      report.append(run_statistical_case(c, number, alpha, suite_size(), calls));
+      report.append(run_statistical_case(c, number, alpha, gpu_suite_size(), calls));
   }
   Lockstep statistical = calls.take_lockstep();
   tv::Report extremes;
   number = 0;
   for (const ExtremesCase& c : extremes_cases()) {
     ++number;
-    if (c.family == family) extremes.append(run_extremes_case(c, number, suite_size(), calls));
+    if (c.family == family) extremes.append(run_extremes_case(c, number, gpu_suite_size(), calls));
   }
   Lockstep extreme = calls.take_lockstep();
 
@@ -132,7 +132,7 @@ TEST(GpuBrokenBsdf, PdfOffByCosineFailsChiSquare) {
   double compile_seconds = 0.0;
   OPEN_DEVICE_OR_FAIL(device, variant, compile_seconds);
   GpuCoreCalls calls(*device);
-  tv::ValidationOptions o = validation_options(suite_size(), alpha_per_test());
+  tv::ValidationOptions o = validation_options(gpu_suite_size(), alpha_per_test());
   o.run_check = [&calls](const std::function<void()>& check) { calls.run_check(check); };
   const std::vector<glm::vec3> incident = {tv::direction_from_angles(30.0, 20.0),
                                            tv::direction_from_angles(85.0, 20.0)};

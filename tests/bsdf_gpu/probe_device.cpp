@@ -133,6 +133,8 @@ ProbeDevice::~ProbeDevice() {
   vkDestroyDescriptorSetLayout(d, io_layout_, nullptr);
   vkDestroyDescriptorSetLayout(d, scene_layout_, nullptr);
   empty_ = Buffer();
+  query_buffer_ = Buffer();
+  result_buffer_ = Buffer();
   device_.reset();
 }
 
@@ -171,29 +173,29 @@ double ProbeDevice::build(const ProbeVariant& variant) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<ProbeResult> ProbeDevice::evaluate(const std::vector<ProbeQuery>& queries,
-                                               const ProbeScene& scene) {
-  std::vector<ProbeResult> results;
-  results.reserve(queries.size());
-  for (std::size_t first = 0; first < queries.size(); first += kMaxBatch) {
-    std::vector<ProbeQuery> batch(queries.begin() + first,
-                                  queries.begin() + std::min(queries.size(), first + kMaxBatch));
-    std::vector<ProbeResult> r = evaluate_batch(batch, scene);
-    results.insert(results.end(), r.begin(), r.end());
+void ProbeDevice::evaluate(const std::vector<ProbeQuery>& queries, const ProbeScene& scene,
+                           ProbeResult* results) {
+  if (pipeline_ == VK_NULL_HANDLE) throw GpuError("bsdf probe: evaluate() before build()");
+  const std::size_t capacity = std::min(queries.size(), kMaxBatch);
+  if (capacity > io_capacity_) {
+    query_buffer_ = host_buffer(*device_, nullptr, capacity * sizeof(ProbeQuery));
+    result_buffer_ = host_buffer(*device_, nullptr, capacity * sizeof(ProbeResult));
+    io_capacity_ = capacity;
   }
-  return results;
+  Buffer materials = host_vector(*device_, *scene.materials);
+  Buffer textures = host_vector(*device_, *scene.textures);
+  Buffer texels = host_vector(*device_, *scene.texels);
+  for (std::size_t first = 0; first < queries.size(); first += kMaxBatch) {
+    const std::size_t count = std::min(queries.size() - first, kMaxBatch);
+    std::memcpy(query_buffer_.mapped(), queries.data() + first, count * sizeof(ProbeQuery));
+    dispatch(uint32_t(count), materials, textures, texels);
+    std::memcpy(results + first, result_buffer_.mapped(), count * sizeof(ProbeResult));
+  }
 }
 
-std::vector<ProbeResult> ProbeDevice::evaluate_batch(const std::vector<ProbeQuery>& queries,
-                                                     const ProbeScene& scene) {
-  if (pipeline_ == VK_NULL_HANDLE) throw GpuError("bsdf probe: evaluate() before build()");
+void ProbeDevice::dispatch(uint32_t count, const Buffer& materials, const Buffer& textures,
+                           const Buffer& texels) {
   VulkanDevice& device = *device_;
-  Buffer materials = host_vector(device, *scene.materials);
-  Buffer textures = host_vector(device, *scene.textures);
-  Buffer texels = host_vector(device, *scene.texels);
-  Buffer query_buffer = host_vector(device, queries);
-  Buffer result_buffer = host_buffer(device, nullptr, queries.size() * sizeof(ProbeResult));
-
   Sets sets(device.handle(), scene_layout_, io_layout_);
   std::vector<VkDescriptorBufferInfo> infos;
   infos.reserve(16);
@@ -216,12 +218,11 @@ std::vector<ProbeResult> ProbeDevice::evaluate_batch(const std::vector<ProbeQuer
          : b == BINDING_TEXELS   ? texels
                                  : empty_);
   }
-  bind(sets.io, 0, query_buffer);
-  bind(sets.io, 1, result_buffer);
+  bind(sets.io, 0, query_buffer_);
+  bind(sets.io, 1, result_buffer_);
   vkUpdateDescriptorSets(device.handle(), static_cast<uint32_t>(writes.size()), writes.data(), 0,
                          nullptr);
 
-  const uint32_t count = static_cast<uint32_t>(queries.size());
   device.submit_and_wait([&](VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     VkDescriptorSet bound[2] = {sets.scene, sets.io};
@@ -239,8 +240,6 @@ std::vector<ProbeResult> ProbeDevice::evaluate_batch(const std::vector<ProbeQuer
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
                          1, &barrier, 0, nullptr, 0, nullptr);
   });
-  const ProbeResult* mapped = static_cast<const ProbeResult*>(result_buffer.mapped());
-  return std::vector<ProbeResult>(mapped, mapped + count);
 }
 
 }  // namespace tr::bsdf_gpu

@@ -46,13 +46,14 @@ class ProbeDevice {
   // Builds the pipeline of `variant`; returns the seconds vkCreateComputePipelines took.
   double build(const ProbeVariant& variant);
 
-  // Evaluates every query on the device (with the pipeline of the last build()).
-  std::vector<ProbeResult> evaluate(const std::vector<ProbeQuery>& queries,
-                                    const ProbeScene& scene);
+  // Evaluates every query on the device (with the pipeline of the last build()) into
+  // results[0, queries.size()).
+  void evaluate(const std::vector<ProbeQuery>& queries, const ProbeScene& scene,
+                ProbeResult* results);
 
  private:
-  std::vector<ProbeResult> evaluate_batch(const std::vector<ProbeQuery>& queries,
-                                          const ProbeScene& scene);
+  void dispatch(uint32_t count, const Buffer& materials, const Buffer& textures,
+                const Buffer& texels);
   void destroy_pipeline();
   std::unique_ptr<VulkanInstance> instance_;
   std::unique_ptr<VulkanDevice> device_;
@@ -62,6 +63,8 @@ class ProbeDevice {
   VkShaderModule module_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   Buffer empty_;  // every scene binding the probe does not read
+  Buffer query_buffer_, result_buffer_;
+  std::size_t io_capacity_ = 0;  // queries they hold
 };
 
 }  // namespace tr::bsdf_gpu
