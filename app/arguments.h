@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace tr {
 
@@ -19,6 +20,14 @@ class Arguments {
   std::string value(const std::string& name) {
     if (!more()) throw UsageError(name + " needs a value");
     return next();
+  }
+  // The NAME=VALUE following option `name` (-D).
+  std::pair<std::string, std::string> name_value(const std::string& name) {
+    std::string kv = value(name);
+    size_t eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError(name + " expects NAME=VALUE, got '" + kv + "'");
+    return {kv.substr(0, eq), kv.substr(eq + 1)};
   }
   unsigned uint_value(const std::string& name, unsigned minimum) {
     std::string v = value(name);

@@ -47,11 +47,8 @@ RenderArgs parse(int argc, char** argv) {
     if (arg == "-o") {
       a.output = args.value(arg);
     } else if (arg == "-D") {
-      std::string kv = args.value(arg);
-      size_t eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw UsageError("-D expects NAME=VALUE, got '" + kv + "'");
-      a.load.defines[kv.substr(0, eq)] = kv.substr(eq + 1);
+      auto [name, value] = args.name_value(arg);
+      a.load.defines[name] = value;
     } else if (arg == "-a") {
       a.load.search_paths.push_back(args.value(arg));
     } else if (arg == "--spp") {
