@@ -61,4 +61,10 @@ void write_text_file(const std::string& path, const std::string& text) {
   tmp.commit();
 }
 
+void create_output_folder(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::create_directories(path, ec);
+  if (ec) throw FileError(path + ": cannot create the output folder: " + ec.message());
+}
+
 }  // namespace tr

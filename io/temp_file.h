@@ -33,4 +33,7 @@ class TempFile {
 // Writes `text` to `path` atomically. Throws FileError.
 void write_text_file(const std::string& path, const std::string& text);
 
+// Creates the folder `path` (and its parents) unless it exists. Throws FileError.
+void create_output_folder(const std::string& path);
+
 }  // namespace tr

@@ -220,10 +220,8 @@ int converge_command(int argc, char** argv) {
     return kExitUsage;
   }
   try {
+    create_output_folder(a.out);
     fs::path dir(a.out);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw FileError(a.out + ": cannot create the output folder: " + ec.message());
     Scene scene = load_scene(a.scene, a.load);
     std::vector<ConvergenceSeries> all;
     for (const RenderVariant& v : a.variants)

@@ -10,6 +10,7 @@
 #include "app/arguments.h"
 #include "app/exit_codes.h"
 #include "io/heatmap.h"
+#include "io/temp_file.h"
 #include "render/write_result.h"
 #include "validation/harness/mitsuba_acceptance.h"
 #include "validation/harness/scene_render.h"
@@ -270,10 +271,8 @@ int validate_command(int argc, char** argv) {
     return kExitUsage;
   }
   try {
+    create_output_folder(a.out);
     fs::path dir(a.out);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw FileError(a.out + ": cannot create the output folder: " + ec.message());
     std::vector<SceneOutcome> outcomes;
     bool passed = true;
     for (const SuiteEntry& e : suite) {
