@@ -76,6 +76,31 @@ static_assert(uint(Warp::cosine_hemisphere) == PROBE_WARP_COSINE_HEMISPHERE &&
                   uint(Warp::triangle) == PROBE_WARP_TRIANGLE,
               "probe.h and tests/bsdf/core_calls.h number the warps alike");
 
+void Lockstep::merge(const Lockstep& o) {
+  if (o.max_pdf > max_pdf) worst_pdf = o.worst_pdf;
+  if (o.max_value > max_value) worst_value = o.worst_value;
+  if (non_finite == 0 && o.non_finite > 0) first_non_finite = o.first_non_finite;
+  queries += o.queries;
+  batches += o.batches;
+  max_runs = std::max(max_runs, o.max_runs);
+  immediate += o.immediate;
+  lobe_mismatch += o.lobe_mismatch;
+  max_direction = std::max(max_direction, o.max_direction);
+  max_pdf = std::max(max_pdf, o.max_pdf);
+  max_value = std::max(max_value, o.max_value);
+  beyond_1e3 += o.beyond_1e3;
+  non_finite += o.non_finite;
+  device_seconds += o.device_seconds;
+}
+
+std::string Lockstep::differences() const {
+  std::ostringstream s;
+  s << std::setprecision(3) << "dir " << max_direction << "  pdf " << max_pdf << "  value "
+    << max_value << "  >1e-3: " << beyond_1e3 << "/" << queries << "  other lobe: " << lobe_mismatch
+    << "  NaN/Inf: " << non_finite;
+  return s.str();
+}
+
 std::string Lockstep::summary() const {
   std::ostringstream s;
   s << queries << " device evaluations in " << batches << " batches (" << immediate
@@ -176,13 +201,17 @@ ProbeResult GpuCoreCalls::query(const ProbeQuery& q, Cpu cpu) {
 }
 
 uint GpuCoreCalls::material_index(const Material& m) {
+  // A check asks about one material at a time.
+  if (!materials_.empty() && std::memcmp(&materials_[last_material_], &m, sizeof(Material)) == 0)
+    return last_material_;
   std::string bytes(reinterpret_cast<const char*>(&m), sizeof(Material));
   auto it = material_indices_.find(bytes);
-  if (it != material_indices_.end()) return it->second;
-  materials_.push_back(m);
-  uint index = uint(materials_.size() - 1);
-  material_indices_.emplace(bytes, index);
-  return index;
+  if (it == material_indices_.end()) {
+    materials_.push_back(m);
+    it = material_indices_.emplace(bytes, uint(materials_.size() - 1)).first;
+  }
+  last_material_ = it->second;
+  return last_material_;
 }
 
 vec3 GpuCoreCalls::warp_direction(Warp w, float parameter, vec2 u) {

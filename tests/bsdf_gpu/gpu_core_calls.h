@@ -34,6 +34,8 @@ struct Lockstep {
   std::size_t non_finite = 0;          // NaN or Inf in a device result
   std::string first_non_finite;        // the query behind the first one
   double device_seconds = 0.0;         // in ProbeDevice::evaluate
+  void merge(const Lockstep& other);
+  std::string differences() const;  // one line: the maxima and counts
   std::string summary() const;
 };
 
@@ -75,6 +77,7 @@ class GpuCoreCalls : public bsdf_suite::CoreCalls {
   ProbeDevice& device_;
   std::vector<Material> materials_;
   std::map<std::string, uint> material_indices_;  // by the record's bytes
+  uint last_material_ = 0;
 
   // The values of the current check: every query evaluated on the device and its result,
   // found through an open-addressing table of positions.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -83,13 +84,19 @@ TEST_P(GpuFamily, PassesAtSidakLevelOnDevice) {
             << " statistical tests at overall significance " << kSignificance
             << ", Sidak level per test alpha = " << alpha << "\n";
   tv::Report report;
+  Lockstep statistical;
+  std::ostringstream per_case;
   std::size_t number = 0;
   for (const StatisticalCase& c : statistical_cases()) {
     ++number;
-    if (c.family == family)
-      report.append(run_statistical_case(c, number, alpha, gpu_suite_size(), calls));
+    if (c.family != family) continue;
+    tv::Report r = run_statistical_case(c, number, alpha, gpu_suite_size(), calls);
+    Lockstep l = calls.take_lockstep();
+    per_case << "  " << std::left << std::setw(46) << r.checks.front().bsdf << l.differences()
+             << "\n";
+    statistical.merge(l);
+    report.append(r);
   }
-  Lockstep statistical = calls.take_lockstep();
   tv::Report extremes;
   number = 0;
   for (const ExtremesCase& c : extremes_cases()) {
@@ -106,6 +113,8 @@ TEST_P(GpuFamily, PassesAtSidakLevelOnDevice) {
   std::cout << "extremes: " << extremes.checks.size() << " parameter settings, "
             << failed_extremes.checks.size() << " failing\n";
   failed_extremes.print(std::cout);
+  std::cout << "GPU vs C++ (the same core/ compiled as C++) at the same arguments, per case:\n"
+            << per_case.str();
   std::cout << "statistical checks: " << statistical.summary() << "\n";
   std::cout << "extremes checks: " << extreme.summary() << "\n";
   std::cout << "family " << family << ": pipeline " << compile_seconds << " s, total "
