@@ -19,7 +19,8 @@
 namespace tr::bsdf_gpu {
 
 // How the device's values compare with the C++ build's at the same arguments (every batched
-// query is computed both ways), and what evaluating them cost.
+// query is computed both ways), and what evaluating them cost. Relative differences are
+// |a - b| / max(|a|, |b|, 1e-6); samples of different lobes are counted, not compared.
 struct Lockstep {
   std::size_t queries = 0;             // evaluated on the device
   std::size_t batches = 0;             // device dispatches
