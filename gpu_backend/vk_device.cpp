@@ -54,11 +54,8 @@ VulkanDevice::VulkanDevice(VulkanInstance& instance, const DeviceInfo& info)
   pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
   pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool_info.queueFamilyIndex = info.queue_family;
-  VkFenceCreateInfo fence_info{};
-  fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
   try {
     vk_check(vkCreateCommandPool(device_, &pool_info, nullptr, &pool_), "vkCreateCommandPool");
-    vk_check(vkCreateFence(device_, &fence_info, nullptr, &fence_), "vkCreateFence");
     load(device_, rt_.create_acceleration_structure, "vkCreateAccelerationStructureKHR");
     load(device_, rt_.destroy_acceleration_structure, "vkDestroyAccelerationStructureKHR");
     load(device_, rt_.get_build_sizes, "vkGetAccelerationStructureBuildSizesKHR");
@@ -89,43 +86,15 @@ VulkanDevice::~VulkanDevice() { destroy(); }
 void VulkanDevice::destroy() {
   if (device_ == VK_NULL_HANDLE) return;
   vkDeviceWaitIdle(device_);
-  if (fence_) vkDestroyFence(device_, fence_, nullptr);
   if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
   vkDestroyDevice(device_, nullptr);
   device_ = VK_NULL_HANDLE;
 }
 
 void VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
-  VkCommandBufferAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-  alloc.commandPool = pool_;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  VkCommandBuffer cmd;
-  vk_check(vkAllocateCommandBuffers(device_, &alloc, &cmd), "vkAllocateCommandBuffers");
-  struct Free {
-    VkDevice d;
-    VkCommandPool p;
-    VkCommandBuffer c;
-    ~Free() { vkFreeCommandBuffers(d, p, 1, &c); }
-  } free_cmd{device_, pool_, cmd};
-
-  VkCommandBufferBeginInfo begin{};
-  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vk_check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-  record(cmd);
-  vk_check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-  check_validation();
-
-  VkSubmitInfo submit{};
-  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  vk_check(vkResetFences(device_, 1, &fence_), "vkResetFences");
-  vk_check(vkQueueSubmit(queue_, 1, &submit, fence_), "vkQueueSubmit");
-  vk_check(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-  check_validation();
+  AsyncCommands commands(*this);
+  commands.submit(record);
+  commands.wait();
 }
 
 AsyncCommands::AsyncCommands(VulkanDevice& device) : device_(device) {

@@ -55,7 +55,6 @@ class VulkanDevice {
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   VkCommandPool pool_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
   std::string name_;
   RayTracingFunctions rt_{};
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt_props_{};

@@ -1,9 +1,9 @@
 // Scene feature masks as specialization constants (issue 4: the pipeline models only what
 // the scene requires). Included by every stage before core/: bit t of a mask is set when the
-// scene uses type t (BSDF_*, EMITTER_*, SHAPE_*, TEXTURE_*, INTEGRATOR_*). The defaults keep every feature,
-// so an unspecialized pipeline is the all-features pipeline. core/ code guards each type's
-// branch with TR_HAS_*; after specialization the driver folds the guards and drops the code
-// of unused types. The host side is gpu_backend/scene_features.h.
+// scene uses type t (BSDF_*, EMITTER_*, SHAPE_*, TEXTURE_*, INTEGRATOR_*). The defaults keep
+// every feature, so an unspecialized pipeline is the all-features pipeline. core/ code guards
+// each type's branch with TR_HAS_*; after specialization the driver folds the guards and drops
+// the code of unused types. The host side is gpu_backend/scene_features.h.
 #ifndef TWINRAY_SHADERS_FEATURES_GLSL
 #define TWINRAY_SHADERS_FEATURES_GLSL
 
