@@ -6,21 +6,10 @@
 
 #include "cpu_backend/render_cpu.h"
 #include "gpu_backend/render_gpu.h"
+#include "validation/harness/scene_render.h"
 #include "validation/image/lockstep.h"
 
 namespace tr {
-
-namespace {
-
-RgbImage mean_image(const RenderResult& r) {
-  RgbImage img;
-  img.width = int(r.width);
-  img.height = int(r.height);
-  img.rgb = r.mean;
-  return img;
-}
-
-}  // namespace
 
 void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed) {
   RenderOptions options;
