@@ -4,18 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "render_fixture.h"
+#include "validation/harness/scene_render.h"
 #include "validation/image/variance_tests.h"
 
 namespace tr::test {
 namespace {
-
-RgbImage to_rgb_image(const RenderResult& r, const std::vector<double>& values) {
-  RgbImage img;
-  img.width = int(r.width);
-  img.height = int(r.height);
-  img.rgb = values;
-  return img;
-}
 
 TEST(DirectIntegrator, AgreesWithPathAtDepthTwo) {
   const std::string file = test_scene("direct_vs_path.xml");
@@ -33,8 +26,8 @@ TEST(DirectIntegrator, AgreesWithPathAtDepthTwo) {
   o.seed = 12;
   RenderResult direct = render_cpu(direct_scene, o);
   EXPECT_EQ(direct.stats.rejected_nonfinite, 0u);
-  RgbImage a = to_rgb_image(path, path.mean), av = to_rgb_image(path, path.variance);
-  RgbImage b = to_rgb_image(direct, direct.mean), bv = to_rgb_image(direct, direct.variance);
+  RgbImage a = mean_image(path), av = variance_image(path);
+  RgbImage b = mean_image(direct), bv = variance_image(direct);
   HypothesisTestResult pixel = pixel_welch_test(a, av, o.spp, b, bv, o.spp);
   HypothesisTestResult block = block_welch_test(a, av, o.spp, b, bv, o.spp);
   EXPECT_TRUE(pixel.passed) << pixel.failing_values << " failing values, min p " << pixel.min_p
