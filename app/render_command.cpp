@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -26,7 +27,8 @@ const char* kUsage =
     "  scene's file name in the current directory.\n"
     "  -D NAME=VALUE   override a <default> of the scene      -a PATH  add a search path\n"
     "  --spp N         samples per pixel (default: the scene's sampler sample_count)\n"
-    "  --seed S        random seed (default 0); same seed => same image on any thread count\n"
+    "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
+    "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
     "  --backend B     cpu (the reference, default) or gpu (Vulkan ray tracing)\n"
     "  --device D      GPU device index or name substring (see `twinray devices`)\n";
@@ -36,6 +38,7 @@ struct RenderArgs {
   std::string output;
   LoadOptions load;
   RenderOptions render;
+  std::optional<std::uint32_t> seed;  // unset: the scene's sampler `seed`
   std::string backend = "cpu";
 };
 
@@ -54,7 +57,7 @@ RenderArgs parse(int argc, char** argv) {
     } else if (arg == "--spp") {
       a.render.spp = args.uint_value(arg, 1);
     } else if (arg == "--seed") {
-      a.render.seed = args.uint_value(arg, 0);
+      a.seed = args.uint_value(arg, 0);
     } else if (arg == "--threads") {
       a.render.threads = args.uint_value(arg, 1);
     } else if (arg == "--backend") {
@@ -118,6 +121,7 @@ int render_command(int argc, char** argv) {
     OutputPaths paths = output_paths(a.output);
     check_output_directory(paths.image);
     Scene scene = load_scene(a.scene, a.load);
+    a.render.seed = a.seed.value_or(scene.seed);
     ProgressBar bar;
     a.render.progress = [&bar](std::uint64_t done, std::uint64_t total) {
       bar.update(done, total);

@@ -63,7 +63,7 @@ TEST(Suite, ParsesFieldsDefaultsAndRelativePaths) {
   EXPECT_EQ(s[0].scene, (dir / "s/one.xml").string());
   EXPECT_EQ(s[0].variance, (dir / "r/one_var.exr").string());
   EXPECT_EQ(s[0].spp, 0u);
-  EXPECT_EQ(s[0].seed, 7u);
+  EXPECT_EQ(s[0].seed, std::optional<std::uint32_t>(7u));
   EXPECT_EQ(s[0].defines.at("spp"), "4");
   EXPECT_EQ(s[1].scene, "/abs/two.xml");
   EXPECT_EQ(s[1].variance, (dir / "v.exr").string());

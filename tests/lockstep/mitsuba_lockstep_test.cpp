@@ -21,8 +21,8 @@ TEST_P(MitsubaLockstep, OneAndSixtyFourSamplesPerPixel) {
   const std::vector<SuiteEntry> suite = read_suite(TWINRAY_MITSUBA_SUITE);
   const SuiteEntry& e = find_entry(suite, GetParam());
   Scene scene = load_entry_scene(e);
-  expect_lockstep(e.name, scene, 1, e.seed);
-  expect_lockstep(e.name, scene, 64, e.seed);
+  expect_lockstep(e.name, scene, 1, entry_seed(e, scene));
+  expect_lockstep(e.name, scene, 64, entry_seed(e, scene));
 }
 
 INSTANTIATE_TEST_SUITE_P(Suite, MitsubaLockstep, testing::ValuesIn(scene_names()),

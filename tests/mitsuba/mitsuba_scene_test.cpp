@@ -18,12 +18,12 @@ int main(int argc, char** argv) {
     std::vector<tr::SuiteEntry> suite = tr::read_suite(argv[1]);
     const tr::SuiteEntry& e = tr::find_entry(suite, argv[2]);
     tr::Scene scene = tr::load_entry_scene(e);
-    std::uint32_t spp = tr::entry_spp(e, scene);
-    tr::SceneRender r = tr::render_scene("cpu", scene, spp, e.seed);
+    std::uint32_t spp = tr::entry_spp(e, scene), seed = tr::entry_seed(e, scene);
+    tr::SceneRender r = tr::render_scene("cpu", scene, spp, seed);
     tr::RgbImage ref = tr::read_rgb(e.reference), var = tr::read_rgb(e.variance);
     tr::AcceptanceResult a = tr::mitsuba_acceptance(r.mean, spp, ref, var, e.reference_spp);
     std::printf("%s: %s, cpu, %ux%u, %u spp, seed %u, %.2f s\n", e.name.c_str(), e.scene.c_str(),
-                r.result.width, r.result.height, spp, e.seed, r.result.stats.seconds);
+                r.result.width, r.result.height, spp, seed, r.result.stats.seconds);
     std::printf("  %s\n  %s\n  %s (information only)\n", tr::describe_test(a.pixel_z).c_str(),
                 tr::describe_test(a.block_z).c_str(), tr::describe_test(a.gain_z).c_str());
     std::printf("%s: %s\n", e.name.c_str(), a.passed ? "PASS" : "FAIL");

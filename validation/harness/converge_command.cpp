@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,7 +41,7 @@ Options:
   --budget SECONDS   time budget of each variant (required)
   --start-spp N      first rung of the spp ladder (default 1)
   --max-spp N        last rung at most (default 1048576)
-  --seed S           seed of the first rung (default 0)
+  --seed S           seed of the first rung (default: the scene's sampler seed)
   --targets LIST     comma-separated relMSE levels for time-to-error (default 1e-2,1e-3,1e-4)
   --out DIR          output folder (default: converge-<scene name>)
   --threads N        CPU worker threads (default: all cores)
@@ -54,7 +55,8 @@ struct ConvergeArgs {
   std::string scene, reference, out;
   std::vector<RenderVariant> variants;
   double budget = 0.0;
-  std::uint32_t start_spp = 1, max_spp = 1u << 20, seed = 0, threads = 0;
+  std::uint32_t start_spp = 1, max_spp = 1u << 20, threads = 0;
+  std::optional<std::uint32_t> seed;  // unset: the scene's sampler `seed`
   std::vector<double> targets = {1e-2, 1e-3, 1e-4};
   LoadOptions load;
   bool help = false;
@@ -135,7 +137,7 @@ ConvergenceSeries converge_variant(const Scene& base, const RenderVariant& v,
   ConvergenceSeries series;
   series.name = v.label + " (" + v.backend + ")";
   double spent = 0.0, last = 0.0;
-  std::uint32_t seed = a.seed;
+  std::uint32_t seed = a.seed.value_or(base.seed);
   for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2, ++seed) {
     if (!series.points.empty() && spent + 2.0 * last > a.budget) break;
     SceneRender r = render_scene(v.backend, scene, std::uint32_t(spp), seed, a.threads);

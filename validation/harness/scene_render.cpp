@@ -32,6 +32,10 @@ std::uint32_t entry_spp(const SuiteEntry& entry, const Scene& scene) {
   return acceptance_spp(c.width, c.height);
 }
 
+std::uint32_t entry_seed(const SuiteEntry& entry, const Scene& scene) {
+  return entry.seed.value_or(scene.seed);
+}
+
 SceneRender render_scene(const std::string& backend, const Scene& scene, std::uint32_t spp,
                          std::uint32_t seed, std::uint32_t threads) {
   RenderOptions options;

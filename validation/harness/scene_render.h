@@ -21,6 +21,8 @@ Scene load_entry_scene(const SuiteEntry& entry);
 
 // The entry's spp, or acceptance_spp of the scene's film when the entry says auto.
 std::uint32_t entry_spp(const SuiteEntry& entry, const Scene& scene);
+// The entry's seed, or the scene's sampler seed.
+std::uint32_t entry_seed(const SuiteEntry& entry, const Scene& scene);
 
 // run_backend with spp, seed and threads (0: all cores); throws BackendUnavailable.
 SceneRender render_scene(const std::string& backend, const Scene& scene, std::uint32_t spp,

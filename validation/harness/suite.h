@@ -10,12 +10,13 @@
 //   reference_spp=N      samples per pixel of the reference
 //   spp=N|auto           samples per pixel to render; auto = floor(2e6 / (width * height)),
 //                        the sample budget of shared/mitsuba-tests/README.md (default auto)
-//   seed=N               sampler seed (default 0)
+//   seed=N               sampler seed (default: the scene's sampler `seed`)
 //   define=NAME=VALUE    a scene <default> override (like render -D); may repeat
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,8 +32,8 @@ struct SuiteEntry {
   std::string name;
   std::string scene, reference, variance;  // resolved paths
   double reference_spp = 0.0;
-  std::uint32_t spp = 0;  // 0: auto
-  std::uint32_t seed = 0;
+  std::uint32_t spp = 0;              // 0: auto
+  std::optional<std::uint32_t> seed;  // unset: the scene's sampler seed
   std::map<std::string, std::string> defines;
 };
 

@@ -184,13 +184,14 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
     Scene scene = load_entry_scene(e);
     o.spp = a.spp > 0 ? a.spp : entry_spp(e, scene);
     o.scene.facts.push_back({"spp", std::to_string(o.spp)});
-    o.scene.facts.push_back({"seed", std::to_string(e.seed)});
+    const std::uint32_t seed = entry_seed(e, scene);
+    o.scene.facts.push_back({"seed", std::to_string(seed)});
     RgbImage ref = read_rgb(e.reference), var = read_rgb(e.variance);
     std::string stem = (dir / e.name).string();
     std::string ref_png = stem + "_reference.png";
     write_preview_png(ref_png, ref);
 
-    SceneRender cpu = render_scene("cpu", scene, o.spp, e.seed, a.threads);
+    SceneRender cpu = render_scene("cpu", scene, o.spp, seed, a.threads);
     std::map<std::string, std::string> meta = {{"twinray:scene", e.scene}};
     write_result(cpu.result, output_paths(stem + "_cpu.exr"), meta);
     o.scene.images.push_back({"CPU render", stem + "_cpu.png"});
@@ -201,7 +202,7 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
 
     if (a.gpu != GpuMode::off) {
       try {
-        SceneRender gpu = render_scene("gpu", scene, o.spp, e.seed, a.threads);
+        SceneRender gpu = render_scene("gpu", scene, o.spp, seed, a.threads);
         write_result(gpu.result, output_paths(stem + "_gpu.exr"), meta);
         o.scene.images.push_back({"GPU render", stem + "_gpu.png"});
         o.scene.facts.push_back(
