@@ -22,7 +22,8 @@ namespace {
 const char* kUsage =
     "usage: twinray render SCENE.xml [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
-    "  Renders a Mitsuba 3 XML scene. Writes OUT.exr (mean radiance, float32 RGB),\n"
+    "  Renders a Mitsuba 3 XML scene. Writes OUT.exr (mean radiance, RGB in the film's\n"
+    "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
     "  OUT_var.exr (per-sample variance) and OUT.png (sRGB preview); OUT defaults to the\n"
     "  scene's file name in the current directory.\n"
     "  -D NAME=VALUE   override a <default> of the scene      -a PATH  add a search path\n"
@@ -131,7 +132,8 @@ int render_command(int argc, char** argv) {
     write_result(result, paths,
                  {{"twinray:scene", a.scene},
                   {"twinray:integrator", scene.integrator_name},
-                  {"twinray:version", TWINRAY_VERSION}});
+                  {"twinray:version", TWINRAY_VERSION}},
+                 scene.film_half);
     print_summary(result, paths);
     return kExitOk;
   } catch (...) {

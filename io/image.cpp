@@ -111,9 +111,10 @@ Image read_image(const std::string& path) {
   return img;
 }
 
-void write_exr(const std::string& path, const Image& img) {
+void write_exr(const std::string& path, const Image& img, bool half) {
   check_image_shape(path, img);
-  OIIO::ImageSpec spec(img.width, img.height, img.channels, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec spec(img.width, img.height, img.channels,
+                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
   spec.channelnames = names_of(img);
   for (const auto& [key, value] : img.metadata) spec.attribute(key, value);
   spec.attribute("compression", "zip");

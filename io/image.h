@@ -38,7 +38,8 @@ std::vector<std::string> default_channel_names(int channels);
 Image read_image(const std::string& path);
 
 // 32-bit float EXR (ZIP compression); metadata entries become string attributes.
-void write_exr(const std::string& path, const Image& img);
+// `half`: store 16-bit floats (Mitsuba's hdrfilm component_format float16) instead of 32-bit.
+void write_exr(const std::string& path, const Image& img, bool half = false);
 
 // 8-bit PNG: colour channels clamped to [0, 1] and sRGB-encoded (IEC 61966-2-1), alpha
 // clamped and stored linearly; 1 to 4 channels. Metadata entries become text chunks.

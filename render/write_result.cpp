@@ -25,7 +25,7 @@ OutputPaths output_paths(const std::string& exr_path) {
 }
 
 void write_result(const RenderResult& result, const OutputPaths& paths,
-                  const std::map<std::string, std::string>& extra) {
+                  const std::map<std::string, std::string>& extra, bool half) {
   std::map<std::string, std::string> meta = extra;
   meta["twinray:spp"] = std::to_string(result.spp);
   meta["twinray:seed"] = std::to_string(result.seed);
@@ -39,8 +39,8 @@ void write_result(const RenderResult& result, const OutputPaths& paths,
   Image var = to_image(result, result.variance);
   var.metadata = meta;
   var.metadata["twinray:content"] = "per-sample variance of each pixel's samples";
-  write_exr(paths.image, mean);
-  write_exr(paths.variance, var);
+  write_exr(paths.image, mean, half);
+  write_exr(paths.variance, var, half);
   write_png_srgb(paths.preview, mean);
 }
 

@@ -1,4 +1,4 @@
-// Writes a render's outputs: OUT.exr (mean, float32 RGB, with metadata), OUT_var.exr (the
+// Writes a render's outputs: OUT.exr (mean, RGB, with metadata), OUT_var.exr (the
 // per-sample variance, Mitsuba `moment` semantics, same naming as Mitsuba's test
 // references) and OUT.png (sRGB preview). Each file is written atomically: a reader sees the
 // old file or the complete new one, never a partial one.
@@ -20,7 +20,8 @@ struct OutputPaths {
 OutputPaths output_paths(const std::string& exr_path);
 
 // Metadata written as EXR attributes: spp, seed, backend, device, time, version, plus `extra`.
+// `half`: both EXRs in 16-bit floats (the film's component_format float16), else 32-bit.
 void write_result(const RenderResult& result, const OutputPaths& paths,
-                  const std::map<std::string, std::string>& extra);
+                  const std::map<std::string, std::string>& extra, bool half);
 
 }  // namespace tr

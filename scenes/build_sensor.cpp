@@ -89,13 +89,14 @@ void SceneBuilder::add_sensor(Node& s) {
   if (file_format != "openexr" && file_format != "exr")
     fail(find_property(film, "file_format")->loc, describe(film), ": file_format must be openexr");
   std::string pixel_format = to_lower(take_string(film, "pixel_format", "rgb"));
-  if (pixel_format != "rgb" && pixel_format != "rgba")
+  if (pixel_format != "rgb")
     fail(find_property(film, "pixel_format")->loc, describe(film), ": pixel_format \"",
-         pixel_format, "\" is not supported (rgb, rgba)");
+         pixel_format, "\" is not supported (rgb; twinray computes no alpha)");
   std::string component_format = to_lower(take_string(film, "component_format", "float16"));
   if (component_format != "float16" && component_format != "float32")
     fail(find_property(film, "component_format")->loc, describe(film), ": component_format \"",
          component_format, "\" is not supported (float16, float32)");
+  scene_.film_half = component_format == "float16";
   if (take_bool(film, "sample_border", false))
     fail(find_property(film, "sample_border")->loc, describe(film),
          ": sample_border is not supported");

@@ -38,6 +38,7 @@ struct Scene {
   std::string path;             // the XML file it was loaded from
   uint spp = 1;                 // sampler `sample_count`
   uint seed = 0;                // sampler `seed`
+  bool film_half = true;        // hdrfilm `component_format` float16 (Mitsuba's default)
   std::string integrator_name;  // e.g. "path", "moment(path)"
 };
 

@@ -125,6 +125,15 @@ TEST(SceneErrors, WrongTypesAndValues) {
       "<emitter", "every emitter of the scene has sampling_weight 0");
 }
 
+// twinray computes no alpha channel: an rgba film is refused, not written as rgb.
+TEST(SceneErrors, RgbaFilmIsRefused) {
+  std::string e = error_of(
+      "<scene version=\"3.0.0\"><sensor type=\"perspective\"><film type=\"hdrfilm\">\n"
+      "<string name=\"pixel_format\" value=\"rgba\"/></film></sensor></scene>");
+  EXPECT_EQ(e.rfind(":2: ", 0), 0u) << e;
+  EXPECT_NE(e.find("pixel_format \"rgba\" is not supported"), std::string::npos) << e;
+}
+
 TEST(SceneErrors, MissingFiles) {
   expect_error("<shape type=\"obj\">\n<string name=\"filename\" value=\"missing.obj\"/></shape>",
                "missing.obj", "mesh file \"missing.obj\" not found");

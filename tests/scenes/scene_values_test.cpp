@@ -305,6 +305,17 @@ TEST(SceneValues, MaterialsAndDefaults) {
   EXPECT_FLOAT_EQ(mat(5).param[PRINCIPLED_FLATNESS].value.x, 0.25f);
 }
 
+// hdrfilm component_format: Mitsuba's default float16, float32 when asked.
+TEST(SceneValues, FilmComponentFormat) {
+  auto film = [](const std::string& inside) {
+    return load_sensor("<sensor type=\"perspective\"><film type=\"hdrfilm\">" + inside +
+                       "</film></sensor>");
+  };
+  EXPECT_TRUE(film("").film_half);
+  EXPECT_TRUE(film("<string name=\"component_format\" value=\"float16\"/>").film_half);
+  EXPECT_FALSE(film("<string name=\"component_format\" value=\"float32\"/>").film_half);
+}
+
 TEST(SceneValues, PrincipledSpecularToEta) {
   Scene s = load_text("<shape type=\"sphere\"><bsdf type=\"principled\"/></shape>");
   // Mitsuba: eta = 2 / (1 - sqrt(0.08 specular)) - 1 with specular = 0.5.

@@ -193,7 +193,7 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
 
     SceneRender cpu = render_scene("cpu", scene, o.spp, seed, a.threads);
     std::map<std::string, std::string> meta = {{"twinray:scene", e.scene}};
-    write_result(cpu.result, output_paths(stem + "_cpu.exr"), meta);
+    write_result(cpu.result, output_paths(stem + "_cpu.exr"), meta, scene.film_half);
     o.scene.images.push_back({"CPU render", stem + "_cpu.png"});
     o.scene.facts.push_back(
         {"CPU", seconds_text(cpu.result.stats.seconds) + ", " + cpu.result.device});
@@ -203,7 +203,7 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
     if (a.gpu != GpuMode::off) {
       try {
         SceneRender gpu = render_scene("gpu", scene, o.spp, seed, a.threads);
-        write_result(gpu.result, output_paths(stem + "_gpu.exr"), meta);
+        write_result(gpu.result, output_paths(stem + "_gpu.exr"), meta, scene.film_half);
         o.scene.images.push_back({"GPU render", stem + "_gpu.png"});
         o.scene.facts.push_back(
             {"GPU", seconds_text(gpu.result.stats.seconds) + ", " + gpu.result.device});
