@@ -8,13 +8,9 @@
 #ifdef TWINRAY_HAS_GPU
 #include "gpu_backend/render_gpu.h"
 #endif
-#ifdef TWINRAY_HAS_COMPARE
-#include "validation/image/compare_command.h"
-#endif
-#ifdef TWINRAY_HAS_HARNESS
 #include "validation/harness/converge_command.h"
 #include "validation/harness/validate_command.h"
-#endif
+#include "validation/image/compare_command.h"
 
 namespace {
 
@@ -44,13 +40,9 @@ int main(int argc, char** argv) {
 #ifdef TWINRAY_HAS_GPU
   if (verb == "devices") return tr::devices_command(argc - 2, argv + 2);
 #endif
-#ifdef TWINRAY_HAS_COMPARE
   if (verb == "compare") return tr::compare_command(argc - 1, argv + 1);
-#endif
-#ifdef TWINRAY_HAS_HARNESS
   if (verb == "validate") return tr::validate_command(argc - 1, argv + 1);
   if (verb == "converge") return tr::converge_command(argc - 1, argv + 1);
-#endif
   std::fprintf(stderr, "twinray: unknown verb '%s'\n%s", verb.c_str(), kUsage);
   return tr::kExitUsage;
 }
