@@ -1,8 +1,9 @@
-// twinray: the command line. Verbs: render, devices, compare, validate, converge.
+// twinray: the command line. Verbs: render, devices, compare, validate, converge, conformance.
 #include <cstdio>
 #include <cstring>
 #include <string>
 
+#include "app/conformance_command.h"
 #include "app/exit_codes.h"
 #include "app/render_command.h"
 #ifdef TWINRAY_HAS_GPU
@@ -21,6 +22,7 @@ const char* kUsage =
     "  compare A.exr B.exr [opts]   compare two renders (twinray compare --help)\n"
     "  validate SUITE [opts]        render a suite on CPU (and GPU), compare, HTML report\n"
     "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
+    "  conformance FOLDER [opts]    load and render every scene of a folder, sort the outcomes\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
     "             5 output not writable, 6 internal error\n";
 
@@ -43,6 +45,7 @@ int main(int argc, char** argv) {
   if (verb == "compare") return tr::compare_command(argc - 1, argv + 1);
   if (verb == "validate") return tr::validate_command(argc - 1, argv + 1);
   if (verb == "converge") return tr::converge_command(argc - 1, argv + 1);
+  if (verb == "conformance") return tr::conformance_command(argc - 2, argv + 2);
   std::fprintf(stderr, "twinray: unknown verb '%s'\n%s", verb.c_str(), kUsage);
   return tr::kExitUsage;
 }

@@ -1,8 +1,32 @@
 #include "scenes/load_scene.h"
 
+#include <map>
+
+#include "scenes/plugins.h"
 #include "scenes/scene_builder.h"
 
 namespace tr {
+
+namespace {
+
+// How many properties of the tree hold each node (a node is held once by its parent and once
+// more by every <ref> to it).
+void count_holders(const Node& node, std::map<const Node*, int>& holders) {
+  for (const Property& p : node.props) {
+    if (p.kind != PropertyKind::Object) continue;
+    if (holders[p.object.get()]++ == 0) count_holders(*p.object, holders);
+  }
+}
+
+// Objects that Mitsuba accepts at the top level but uses only where another object refers to
+// them: an `area` emitter (attached to the shapes that <ref> it), a sampler, film or rfilter
+// (nested into a sensor or film by <ref>).
+bool used_only_by_reference(const Node& o) {
+  return (o.tag == "emitter" && o.type == "area") || o.tag == "sampler" || o.tag == "film" ||
+         o.tag == "rfilter";
+}
+
+}  // namespace
 
 SceneBuilder::SceneBuilder(ParsedScene parsed, const std::string& path)
     : parsed_(std::move(parsed)), b_(scene_.buffers) {
@@ -14,11 +38,21 @@ Scene SceneBuilder::build() {
   b_.globals.environment = NO_INDEX;
   Node& root = *parsed_.root;
   bool have_sensor = false, have_integrator = false;
+  std::map<const Node*, int> holders;
+  count_holders(root, holders);
   for (Property& p : root.props) {
     if (p.kind != PropertyKind::Object)
       fail(p.loc, "parameter '", p.name, "' cannot be set on <scene>");
     p.used = true;
     Node& o = *p.object;
+    if (used_only_by_reference(o)) {
+      // Twinray refuses what would silently do nothing, as it refuses unread parameters.
+      if (holders[&o] < 2)
+        fail(o.loc, describe(o), o.id.empty() ? "" : " (id \"" + o.id + "\")",
+             " is declared at the top level but nothing refers to it; nest it where it is used "
+             "or <ref> it there");
+      continue;
+    }
     if (o.tag == "shape") {
       if (o.type == "shapegroup")
         add_shapegroup(o);
@@ -61,7 +95,9 @@ Scene SceneBuilder::build() {
 }
 
 Scene load_scene(const std::string& xml_path, const LoadOptions& options) {
-  SceneBuilder builder(parse_scene_xml(xml_path, options), xml_path);
+  ParsedScene parsed = parse_scene_xml(xml_path, options);
+  check_plugins(*parsed.root);
+  SceneBuilder builder(std::move(parsed), xml_path);
   return builder.build();
 }
 

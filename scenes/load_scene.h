@@ -12,6 +12,9 @@ namespace tr {
 struct LoadOptions {
   std::map<std::string, std::string> defines;  // -D name=value, override <default> values
   std::vector<std::string> search_paths;       // -a PATH, searched for files the scene names
+  // A define that no $name uses is an error unless this is set (a tool that passes the same
+  // defines to many scenes, as Mitsuba's documentation script passes spp).
+  bool unused_defines_allowed = false;
 };
 
 // Parses and builds the scene; throws SceneError("file:line: what and why") on bad input.

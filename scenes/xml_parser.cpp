@@ -28,8 +28,11 @@ fs::path FileResolver::resolve(const std::string& name, const fs::path& fallback
 
 namespace {
 
-const std::set<std::string> OBJECT_TAGS = {"shape", "bsdf",    "texture", "emitter",   "sensor",
-                                           "film",  "rfilter", "sampler", "integrator"};
+// Mitsuba's object tags; media, phase functions and volumes are parsed only to be refused by
+// name (scenes/plugins.h).
+const std::set<std::string> OBJECT_TAGS = {"shape",      "bsdf",   "texture", "emitter",
+                                           "sensor",     "film",   "rfilter", "sampler",
+                                           "integrator", "medium", "phase",   "volume"};
 const int MAX_INCLUDE_DEPTH = 15;
 
 // One XML file: its text (for offset -> line) and its directory.
@@ -81,7 +84,9 @@ glm::dmat4 rotation(glm::dvec3 axis, double degrees) {
 class Parser {
  public:
   explicit Parser(const LoadOptions& options)
-      : params_(options.defines), defines_(options.defines) {
+      : params_(options.defines),
+        defines_(options.defines),
+        unused_defines_allowed_(options.unused_defines_allowed) {
     for (const std::string& p : options.search_paths) resolver_.dirs.push_back(fs::path(p));
   }
 
@@ -94,9 +99,11 @@ class Parser {
     auto root = std::make_shared<Node>();
     root->tag = "scene";
     parse_file(path, path, *root, 0, true);
+    resolve_references();
+    check_cycles(*root);
     // As Mitsuba: a -D value that no $name uses is an error (probably a typo).
     for (const auto& [name, value] : defines_)
-      if (!used_.count(name))
+      if (!used_.count(name) && !unused_defines_allowed_)
         fail(root->loc, "-D ", name, "=", value, " is not used: the scene has no $", name);
     return {root, resolver_};
   }
@@ -104,10 +111,49 @@ class Parser {
  private:
   std::map<std::string, std::string> params_;
   std::map<std::string, std::string> defines_;
+  bool unused_defines_allowed_;
   std::set<std::string> used_;  // names substituted at least once
   FileResolver resolver_;
   std::map<std::string, NodePtr> ids_;
   int unnamed_ = 0;
+  // <ref> elements, resolved once every file is read: Mitsuba resolves references to objects
+  // declared anywhere in the scene, before or after the reference (src/core/parser.cpp).
+  struct PendingReference {
+    Node* owner;  // kept alive by the tree
+    size_t property;
+    std::string id;
+  };
+  std::vector<PendingReference> references_;
+
+  void resolve_references() {
+    for (const PendingReference& r : references_) {
+      Property& p = r.owner->props[r.property];
+      auto it = ids_.find(r.id);
+      if (it == ids_.end())
+        fail(p.loc, "<ref id=\"", r.id, "\">: no object in the scene has this id");
+      p.object = it->second;
+    }
+  }
+
+  // Mitsuba refuses circular references (an object that contains itself through <ref>s).
+  void check_cycles(const Node& node) {
+    std::set<const Node*> done, path;
+    visit_for_cycles(node, done, path);
+  }
+  void visit_for_cycles(const Node& node, std::set<const Node*>& done,
+                        std::set<const Node*>& path) {
+    if (done.count(&node)) return;
+    path.insert(&node);
+    for (const Property& p : node.props) {
+      if (p.kind != PropertyKind::Object) continue;
+      if (path.count(p.object.get()))
+        fail(p.loc, describe(*p.object), " (id \"", p.object->id,
+             "\") contains itself through this reference");
+      visit_for_cycles(*p.object, done, path);
+    }
+    path.erase(&node);
+    done.insert(&node);
+  }
 
   void parse_file(const fs::path& file, const std::string& display, Node& parent, int depth,
                   bool is_main) {
@@ -236,15 +282,12 @@ class Parser {
       check_attributes(x, src, {"id", "name"});
       no_children(x, src);
       std::string id = required_attr(x, "id", src);
-      auto it = ids_.find(id);
-      if (it == ids_.end())
-        fail(loc, "<ref id=\"", id, "\">: no object with this id was declared before");
       Property p;
       p.name = has_attr(x, "name") ? attr(x, "name", src) : "_arg_" + std::to_string(unnamed_++);
       p.kind = PropertyKind::Object;
       p.loc = loc;
-      p.object = it->second;
       add_property(parent, std::move(p));
+      references_.push_back({&parent, parent.props.size() - 1, id});
       return;
     }
 
