@@ -2,10 +2,12 @@
 // pre-transformed to world space; analytic shapes keep a canonical object and its transforms
 // (core/scene_types.h). Semantics follow Mitsuba 3's src/shapes/*.cpp.
 #include <cmath>
+#include <limits>
 
 #include "core/frame.h"
 #include "scenes/alias_table.h"
 #include "scenes/scene_builder.h"
+#include "scenes/serialized.h"
 
 namespace tr {
 
@@ -54,6 +56,38 @@ void set_transforms(Shape& r, const glm::dmat4& m) {
 
 }  // namespace
 
+const TriangleMesh& SceneBuilder::mesh_file(Node& n) {
+  std::string path = resolve_file(n, take_string(n, "filename"), "mesh file");
+  const Location& file_loc = find_property(n, "filename")->loc;
+  if (n.type == "serialized") {
+    Property* index_property = find_property(n, "shape_index");
+    long long index = take_integer(n, "shape_index", 0);
+    if (index < 0 || index > std::numeric_limits<int>::max())
+      fail(index_property->loc, path, ": shape_index must be a non-negative int, not ", index);
+    std::string key = path + "|serialized@" + std::to_string(index);
+    auto cached = mesh_cache_.find(key);
+    if (cached != mesh_cache_.end()) return cached->second;
+    try {
+      return mesh_cache_.emplace(key, load_serialized_mesh(path, uint32_t(index)).mesh)
+          .first->second;
+    } catch (const ShapeIndexError& e) {
+      fail(index_property ? index_property->loc : file_loc, path, ": ", e.what());
+    } catch (const std::exception& e) {
+      fail(file_loc, path, ": ", e.what());
+    }
+  } else {
+    bool flip_tex = take_bool(n, "flip_tex_coords", n.type == "obj");
+    std::string key = path + (flip_tex ? "|flip" : "");
+    auto cached = mesh_cache_.find(key);
+    if (cached != mesh_cache_.end()) return cached->second;
+    try {
+      return mesh_cache_.emplace(key, load_mesh_file(path, flip_tex)).first->second;
+    } catch (const std::exception& e) {
+      fail(file_loc, path, ": ", e.what());
+    }
+  }
+}
+
 void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_group) {
   PendingShape s;
   Shape& r = s.record;
@@ -93,25 +127,13 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   }
 
   const std::string& type = n.type;
-  bool is_mesh = type == "obj" || type == "ply" || type == "rectangle" || type == "cube";
-  if (is_mesh) {
+  bool from_file = type == "obj" || type == "ply" || type == "serialized";
+  if (from_file || type == "rectangle" || type == "cube") {
     r.type = SHAPE_MESH;
     bool face_normals = false;
-    if (type == "obj" || type == "ply") {
-      std::string file = take_string(n, "filename");
+    if (from_file) {
       face_normals = take_bool(n, "face_normals", false);
-      bool flip_tex = take_bool(n, "flip_tex_coords", type == "obj");
-      std::string path = resolve_file(n, file, "mesh file");
-      std::string key = path + (flip_tex ? "|flip" : "");
-      auto cached = mesh_cache_.find(key);
-      if (cached == mesh_cache_.end()) {
-        try {
-          cached = mesh_cache_.emplace(key, load_mesh_file(path, flip_tex)).first;
-        } catch (const std::exception& e) {
-          fail(find_property(n, "filename")->loc, path, ": ", e.what());
-        }
-      }
-      s.mesh = cached->second;
+      s.mesh = mesh_file(n);
     } else {
       s.mesh = type == "rectangle" ? make_rectangle() : make_cube();
     }
@@ -170,7 +192,8 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
     fail(n.loc, "<shape type=\"", type, "\"> cannot be nested here");
   } else {
     fail(n.loc, "unknown shape type \"", type,
-         "\" (supported: obj, ply, rectangle, cube, sphere, disk, cylinder, shapegroup, instance)");
+         "\" (supported: obj, ply, serialized, rectangle, cube, sphere, disk, cylinder, "
+         "shapegroup, instance)");
   }
   check_consumed(n);
   out.push_back(std::move(s));

@@ -97,6 +97,11 @@ TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
     throw std::runtime_error("only some parts of the mesh have vertex normals");
   if (any_uvs && !all_uvs)
     throw std::runtime_error("only some parts of the mesh have texture coordinates");
+  check_finite(mesh);
+  return mesh;
+}
+
+void check_finite(const TriangleMesh& mesh) {
   auto finite = [](glm::vec3 v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
   };
@@ -107,7 +112,9 @@ TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
   for (const glm::vec2& t : mesh.uvs)
     if (!finite(glm::vec3(t, 0.0f)))
       throw std::runtime_error("a texture coordinate is NaN or infinite");
-  return mesh;
+  for (const auto& [name, attribute] : mesh.attributes)
+    for (float v : attribute.values)
+      if (!std::isfinite(v)) throw std::runtime_error("a value of " + name + " is NaN or infinite");
 }
 
 TriangleMesh make_rectangle() {

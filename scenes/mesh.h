@@ -3,22 +3,34 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace tr {
+
+// Per-vertex data a texture may read by name (Mitsuba's "vertex_*" mesh attributes).
+struct VertexAttribute {
+  int dim = 0;
+  std::vector<float> values;  // dim per vertex
+};
 
 struct TriangleMesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;  // empty: no shading normals (face normals)
   std::vector<glm::vec2> uvs;      // empty: no uvs
   std::vector<uint32_t> indices;   // 3 per triangle
+  // By Mitsuba's attribute name, e.g. "vertex_color".
+  std::map<std::string, VertexAttribute> attributes;
 };
 
 // Loads every triangle of an OBJ or PLY file (Assimp) into one mesh, with the file's normals
 // and uvs if it has them; uv.y = 1 - uv.y when `flip_tex_coords` (Mitsuba's OBJ default).
 // Throws std::runtime_error with a one-line reason.
 TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords);
+
+// Throws std::runtime_error when a position, normal, uv or attribute value is NaN or infinite.
+void check_finite(const TriangleMesh& mesh);
 
 // Mitsuba `rectangle`: [-1, 1]^2 in the z = 0 plane, normal +z, uv = (p.xy + 1) / 2.
 TriangleMesh make_rectangle();

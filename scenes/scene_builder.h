@@ -64,7 +64,8 @@ class SceneBuilder {
   std::string resolve_file(Node& owner, const std::string& name, const char* what);
 
   // ---- shapes (build_shapes.cpp)
-  std::map<std::string, TriangleMesh> mesh_cache_;  // file contents by path and uv flip
+  // File contents by path and uv flip (obj, ply) or mesh index (serialized).
+  std::map<std::string, TriangleMesh> mesh_cache_;
   std::vector<PendingShape> top_shapes_;
   std::vector<PendingGroup> groups_;
   std::map<const Node*, uint> group_index_;
@@ -73,6 +74,9 @@ class SceneBuilder {
     glm::dmat4 to_world;
   };
   std::vector<PendingInstance> instances_;
+  // The object-space mesh of an obj, ply or serialized shape (`filename` and the parameters
+  // that select what is read from it).
+  const TriangleMesh& mesh_file(Node& shape);
   void add_shape(Node& shape, std::vector<PendingShape>& out, bool in_group);
   void add_shapegroup(Node& group);
   void add_instance(Node& instance);
