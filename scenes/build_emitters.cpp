@@ -21,7 +21,8 @@ glm::dvec3 emitter_color(Node& e, const std::string& name) {
     fail(p->loc, describe(e), ": a textured '", name, "' is not supported");
   glm::dvec3 c = take_color(e, name, glm::dvec3(1.0));
   if (glm::any(glm::lessThan(c, glm::dvec3(0.0))))
-    fail(p->loc, describe(e), ": '", name, "' must not be negative");
+    fail(p->loc, describe(e), ": a negative '", name,
+         "' is not supported by twinray (Mitsuba accepts negative emission)");
   return c;
 }
 

@@ -41,11 +41,15 @@ double luminance_d(glm::dvec3 c) { return 0.212671 * c.x + 0.715160 * c.y + 0.07
 // average of the broadcast color reproduces.
 double scalar_of_constant(glm::dvec3 c) { return (c.x + c.y + c.z) / 3.0; }
 
-// Mitsuba's lookup_ior: a float, or a name from the IOR table.
+// Mitsuba's lookup_ior (include/mitsuba/render/ior.h): a <float>, or a name from the IOR
+// table; it reads anything else, an <integer> included, as a string and fails.
 double ior_parameter(Node& node, const std::string& name, const char* default_name) {
   Property* p = find_property(node, name);
   double ior = 0.0;
-  if (p && (p->kind == PropertyKind::Float || p->kind == PropertyKind::Integer)) {
+  if (p && p->kind == PropertyKind::Integer)
+    fail(p->loc, describe(node), ": ", name,
+         " must be a <float> or an IOR name (Mitsuba refuses an <integer> here)");
+  if (p && p->kind == PropertyKind::Float) {
     ior = take_float(node, name);
   } else {
     std::string value = take_string(node, name, default_name);

@@ -176,6 +176,8 @@ TEST(PluginDefaults, Dielectrics) {
            flt("specular_transmittance", "0.5")});
   }
   check_microfacet("roughdielectric");
+  expect_error("<bsdf type=\"dielectric\"><integer name=\"int_ior\" value=\"2\"/></bsdf>",
+               "int_ior must be a <float> or an IOR name (Mitsuba refuses an <integer> here)");
 }
 
 TEST(PluginDefaults, Plastics) {
