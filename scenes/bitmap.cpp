@@ -25,6 +25,7 @@ Image load_image(const std::string& path, bool raw) {
   image.width = spec.width;
   image.height = spec.height;
   image.channels = spec.nchannels;
+  image.bytes_per_channel = int(spec.format.size());
   if (image.width <= 0 || image.height <= 0) throw std::runtime_error("image is empty");
   if (image.channels < 1 || image.channels > 4)
     throw std::runtime_error("unsupported channel count " + std::to_string(image.channels) +

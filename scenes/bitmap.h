@@ -12,6 +12,7 @@ struct Image {
   int width = 0;
   int height = 0;
   int channels = 0;               // in the file: 1 (Y), 2 (YA), 3 (RGB) or 4 (RGBA)
+  int bytes_per_channel = 0;      // of the file's samples: 1 (8-bit), 2 (16-bit, half), 4 (float)
   std::vector<glm::vec4> texels;  // Y is broadcast to RGB; alpha 1 when the file has none
 };
 

@@ -1,5 +1,6 @@
 // Emitter plugins -> Emitter records, the envmap's texel alias table and the emitter-selection
-// table. Parameters as Mitsuba 3's src/emitters/*.cpp.
+// table. Parameters, defaults and refusals as Mitsuba 3.8's src/emitters/*.cpp and
+// src/render/endpoint.cpp (tests/scenes/plugin_defaults_test.cpp pins them).
 #include <algorithm>
 #include <cmath>
 
@@ -20,7 +21,8 @@ glm::dvec3 emitter_color(Node& e, const std::string& name) {
     fail(p->loc, describe(e), ": a textured '", name, "' is not supported");
   glm::dvec3 c = take_color(e, name, glm::dvec3(1.0));
   if (glm::any(glm::lessThan(c, glm::dvec3(0.0))))
-    fail(p->loc, describe(e), ": '", name, "' must not be negative");
+    fail(p->loc, describe(e), ": a negative '", name,
+         "' is not supported by twinray (Mitsuba accepts negative emission)");
   return c;
 }
 
@@ -55,7 +57,8 @@ void SceneBuilder::add_emitter(Node& n) {
     if (has_property(n, "position") && has_property(n, "to_world"))
       fail(n.loc, describe(n), ": give either 'position' or 'to_world', not both");
     glm::dmat4 to_world = take_transform(n, "to_world");
-    glm::dvec3 position = take_point(n, "position", glm::dvec3(to_world[3]));
+    // Mitsuba stores <point> and <vector> as one type, so either gives the position.
+    glm::dvec3 position = take_vector(n, "position", glm::dvec3(to_world[3]));
     e.position = vec3(position);
     e.radiance = vec3(emitter_color(n, "intensity"));
   } else if (n.type == "directional") {
@@ -70,6 +73,8 @@ void SceneBuilder::add_emitter(Node& n) {
   } else if (n.type == "constant") {
     e = blank_emitter(EMITTER_CONSTANT);
     e.radiance = vec3(emitter_color(n, "radiance"));
+    // Every emitter reads `to_world` (Endpoint); a constant environment is the same under any.
+    take_transform(n, "to_world");
   } else if (n.type == "envmap") {
     e = blank_emitter(EMITTER_ENVMAP);
     std::string file = take_string(n, "filename");
@@ -84,7 +89,11 @@ void SceneBuilder::add_emitter(Node& n) {
       fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
     store_rows(to_world, e.to_world);
     store_rows(glm::inverse(to_world), e.to_local);
-    auto [offset, size] = load_texels(n, file, false, false);
+    // Mitsuba converts the map to the variant's float type (no half-precision storage).
+    auto [offset, size] = load_texels(n, file, false, false, TexelFormat::Variant);
+    if (size.x < 2u || size.y < 3u)
+      fail(find_property(n, "filename")->loc, describe(n), ": \"", file, "\" is ", size.x, "x",
+           size.y, " pixels; an environment map must be at least 2x3 (as in Mitsuba)");
     Texture t{};
     t.type = TEXTURE_BITMAP;
     t.filter_mode = FILTER_BILINEAR;

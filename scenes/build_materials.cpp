@@ -1,5 +1,8 @@
 // BSDF plugins -> Material records (slot meaning: core/material_slots.h), textures -> Texture
-// records. Defaults are Mitsuba 3's (v3.5 plugin sources, src/bsdfs/*.cpp, src/textures/*.cpp).
+// records. Parameters, defaults and refusals are Mitsuba 3.8's (src/bsdfs/*.cpp,
+// src/textures/*.cpp; tests/scenes/plugin_defaults_test.cpp pins them).
+#include <Imath/half.h>
+
 #include <filesystem>
 
 #include "core/bsdf/roughplastic.h"
@@ -38,11 +41,15 @@ double luminance_d(glm::dvec3 c) { return 0.212671 * c.x + 0.715160 * c.y + 0.07
 // average of the broadcast color reproduces.
 double scalar_of_constant(glm::dvec3 c) { return (c.x + c.y + c.z) / 3.0; }
 
-// Mitsuba's lookup_ior: a float, or a name from the IOR table.
+// Mitsuba's lookup_ior (include/mitsuba/render/ior.h): a <float>, or a name from the IOR
+// table; it reads anything else, an <integer> included, as a string and fails.
 double ior_parameter(Node& node, const std::string& name, const char* default_name) {
   Property* p = find_property(node, name);
   double ior = 0.0;
-  if (p && (p->kind == PropertyKind::Float || p->kind == PropertyKind::Integer)) {
+  if (p && p->kind == PropertyKind::Integer)
+    fail(p->loc, describe(node), ": ", name,
+         " must be a <float> or an IOR name (Mitsuba refuses an <integer> here)");
+  if (p && p->kind == PropertyKind::Float) {
     ior = take_float(node, name);
   } else {
     std::string value = take_string(node, name, default_name);
@@ -63,6 +70,43 @@ void microfacet_flags(Node& node, Material& m) {
     fail(find_property(node, "distribution")->loc, describe(node), ": unknown distribution \"", d,
          "\" (expected beckmann or ggx)");
   if (take_bool(node, "sample_visible", true)) m.flags |= MATERIAL_SAMPLE_VISIBLE;
+}
+
+// roughplastic's `alpha`, a float (Mitsuba's MicrofacetDistribution(props), default 0.1):
+// alpha_u and alpha_v are accepted together when equal; the BSDF itself is isotropic only.
+double roughplastic_alpha(Node& n) {
+  if (!has_property(n, "alpha_u") && !has_property(n, "alpha_v"))
+    return take_float(n, "alpha", 0.1);
+  if (has_property(n, "alpha"))
+    fail(find_property(n, "alpha")->loc, describe(n), ": give either alpha or alpha_u/alpha_v");
+  if (!has_property(n, "alpha_u") || !has_property(n, "alpha_v"))
+    fail(n.loc, describe(n), ": alpha_u and alpha_v must be given together");
+  double alpha_u = take_float(n, "alpha_u"), alpha_v = take_float(n, "alpha_v");
+  if (float(alpha_u) != float(alpha_v))
+    fail(find_property(n, "alpha_v")->loc, describe(n),
+         ": anisotropic roughness (alpha_u != alpha_v) is not supported by roughplastic, as in "
+         "Mitsuba");
+  return alpha_u;
+}
+
+// Mitsuba's get_flag (src/bsdfs/principledhelpers.h): the spec_trans lobe is on when the
+// parameter is given, unless it is a <float> equal to 0 (an <integer> 0 or a texture turns it on).
+bool principled_has_spec_trans(Node& n) {
+  Property* p = find_property(n, "spec_trans");
+  return p && !(p->kind == PropertyKind::Float && float(p->number) == 0.0f);
+}
+
+// Whether a BSDF has a transmission or null lobe (Mitsuba's BSDFFlags::Transmission).
+bool has_transmission(Node& bsdf) {
+  const std::string& t = bsdf.type;
+  if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric" || t == "mask")
+    return true;
+  if (t == "principled") return principled_has_spec_trans(bsdf);
+  if (t == "twosided")
+    for (Property& p : bsdf.props)
+      if (p.kind == PropertyKind::Object && p.object->tag == "bsdf" && has_transmission(*p.object))
+        return true;
+  return false;
 }
 
 }  // namespace
@@ -98,9 +142,10 @@ std::string SceneBuilder::resolve_file(Node& owner, const std::string& name, con
 }
 
 std::pair<uint, glm::uvec2> SceneBuilder::load_texels(Node& owner, const std::string& file_name,
-                                                      bool raw, bool scalar) {
+                                                      bool raw, bool scalar, TexelFormat format) {
   std::string path = resolve_file(owner, file_name, "image file");
-  std::string key = path + (raw ? "|raw" : "|srgb") + (scalar ? "|scalar" : "|color");
+  std::string key = path + (raw ? "|raw" : "|srgb") + (scalar ? "|scalar" : "|color") + "|" +
+                    std::to_string(int(format));
   auto it = texel_cache_.find(key);
   if (it != texel_cache_.end()) return it->second;
   Image image;
@@ -109,8 +154,14 @@ std::pair<uint, glm::uvec2> SceneBuilder::load_texels(Node& owner, const std::st
   } catch (const std::exception& e) {
     fail(find_property(owner, "filename")->loc, path, ": ", e.what());
   }
+  // Mitsuba rounds the linear texels to half precision before any lookup (Bitmap::convert to
+  // Float16, round to nearest even).
+  bool half = format == TexelFormat::Float16 ||
+              (format == TexelFormat::Auto && image.bytes_per_channel <= 2);
+  auto stored = [half](float c) { return half ? float(Imath::half(c)) : c; };
   uint offset = uint(b_.texels.size());
-  for (const glm::vec4& t : image.texels) {
+  for (glm::vec4 t : image.texels) {
+    t = glm::vec4(stored(t.x), stored(t.y), stored(t.z), t.w);
     if (scalar) {
       // Mitsuba's eval_1 of an RGB bitmap is the luminance of the interpolated color.
       float y = float(luminance_d(glm::dvec3(t)));
@@ -159,13 +210,35 @@ uint SceneBuilder::texture(Node& tex, bool scalar) {
            "\" must be repeat, mirror or clamp");
     bool raw = take_bool(tex, "raw", false);
     take_bool(tex, "accel", true);  // a CUDA texture-unit hint in Mitsuba; no effect on values
+    std::string format_name = take_string(tex, "format", "auto");
+    TexelFormat format = TexelFormat::Auto;
+    if (format_name == "variant")
+      format = TexelFormat::Variant;
+    else if (format_name == "fp16")
+      format = TexelFormat::Float16;
+    else if (format_name != "auto")
+      fail(find_property(tex, "format")->loc, describe(tex), ": format \"", format_name,
+           "\" must be auto, variant or fp16");
     std::string file = take_string(tex, "filename");
-    auto [offset, size] = load_texels(tex, file, raw, scalar);
+    auto [offset, size] = load_texels(tex, file, raw, scalar, format);
+    // Mitsuba resamples a bitmap narrower than 2 pixels to 2 with a tent filter; only a 1x1
+    // one comes out as the same (constant) texture without that resampling.
+    if ((size.x < 2u || size.y < 2u) && size != glm::uvec2(1u))
+      fail(find_property(tex, "filename")->loc, describe(tex), ": \"", file, "\" is ", size.x, "x",
+           size.y,
+           " pixels; Mitsuba resamples bitmaps smaller than 2x2 with a tent filter, which twinray "
+           "does not do (use a 1x1 or at least 2x2 image)");
     t.texel_offset = offset;
     t.width = size.x;
     t.height = size.y;
   } else if (tex.type == "checkerboard") {
     t.type = TEXTURE_CHECKERBOARD;
+    for (const char* name : {"color0", "color1"}) {
+      Property* p = find_property(tex, name);
+      if (p && p->kind == PropertyKind::Object)
+        fail(p->loc, describe(tex), ": a nested texture as '", name,
+             "' is not supported by twinray (its checkerboard holds two constant colors)");
+    }
     glm::dvec3 c0 = take_color(tex, "color0", glm::dvec3(0.4));
     glm::dvec3 c1 = take_color(tex, "color1", glm::dvec3(0.2));
     if (scalar) {
@@ -254,7 +327,8 @@ TexturedValue SceneBuilder::roughplastic_table(const Material& m) {
 }
 
 // Mean over the surface of a parameter (Mitsuba's Texture::mean): the constant's channel
-// mean, a bitmap's mean texel, a checkerboard's mean of its two colours.
+// mean, a bitmap's mean texel luminance (BitmapTextureImpl::rebuild_internals), a
+// checkerboard's mean of its two colours' means.
 double SceneBuilder::textured_mean(const TexturedValue& v) const {
   if (v.texture == NO_INDEX) return (double(v.value.x) + v.value.y + v.value.z) / 3.0;
   const Texture& t = b_.textures[v.texture];
@@ -265,7 +339,7 @@ double SceneBuilder::textured_mean(const TexturedValue& v) const {
   size_t count = size_t(t.width) * t.height;
   for (size_t i = 0; i < count; ++i) {
     const vec4& texel = b_.texels[t.texel_offset + i];
-    sum += (double(texel.x) + texel.y + texel.z) / 3.0;
+    sum += luminance_d(glm::dvec3(texel.x, texel.y, texel.z));
   }
   return count ? sum / double(count) : 0.0;
 }
@@ -279,9 +353,10 @@ Material SceneBuilder::build_material(Node& n) {
   } else if (type == "conductor" || type == "roughconductor") {
     m = empty_material(type == "conductor" ? BSDF_CONDUCTOR : BSDF_ROUGHCONDUCTOR);
     std::string material_name = take_string(n, "material", "none");
-    if (has_property(n, "eta") && material_name != "none")
-      fail(find_property(n, "material")->loc, describe(n),
-           ": give either a named 'material' or 'eta'/'k', not both");
+    for (const char* name : {"eta", "k"})
+      if (has_property(n, name) && material_name != "none")
+        fail(find_property(n, name)->loc, describe(n),
+             ": give either a named 'material' or 'eta'/'k', not both");
     if (material_name == "none") {
       // Mitsuba's default: eta = 0, k = 1, a perfect mirror.
       m.param[CONDUCTOR_ETA] = textured(n, "eta", glm::dvec3(0.0), false);
@@ -329,10 +404,9 @@ Material SceneBuilder::build_material(Node& n) {
     double s_mean = textured_mean(m.param[PLASTIC_SPECULAR_REFLECTANCE]);
     m.extra = d_mean + s_mean > 0.0 ? float(s_mean / (d_mean + s_mean)) : 0.5f;
     if (type == "roughplastic") {
+      if (int_ior == ext_ior) fail(n.loc, describe(n), ": int_ior and ext_ior must differ");
       microfacet_flags(n, m);
-      if (has_property(n, "alpha_u") || has_property(n, "alpha_v"))
-        fail(n.loc, describe(n), ": roughplastic is isotropic; use 'alpha'");
-      m.param[PLASTIC_ALPHA] = constant_value(glm::dvec3(take_float(n, "alpha", 0.1)));
+      m.param[PLASTIC_ALPHA] = constant_value(glm::dvec3(roughplastic_alpha(n)));
       m.param[ROUGHPLASTIC_TABLE] = roughplastic_table(m);
     }
   } else if (type == "principled") {
@@ -345,11 +419,18 @@ Material SceneBuilder::build_material(Node& n) {
         fail(p->loc, describe(n), ": different front and back BSDFs are not supported");
     if (type == "mask" && inner.size() != 1)
       fail(inner[1]->loc, describe(n), " takes exactly one nested BSDF");
+    if (inner.size() > 2) fail(inner[2]->loc, describe(n), " takes at most two nested BSDFs");
     TexturedValue opacity = constant_value(glm::dvec3(1.0));
     if (type == "mask") opacity = textured(n, "opacity", glm::dvec3(0.5), true);
+    // Mitsuba 3.8 twosided.cpp refuses a nested BSDF with a transmission (or null) lobe
+    // unless allow_transmission is set.
+    if (type == "twosided" && !take_bool(n, "allow_transmission", false) &&
+        has_transmission(*inner[0]->object))
+      fail(n.loc, describe(n), ": the nested ", describe(*inner[0]->object),
+           " transmits light; Mitsuba accepts it only with allow_transmission = true");
     m = build_material(*inner[0]->object);
     if (type == "twosided") {
-      if (m.flags & MATERIAL_TWOSIDED) fail(n.loc, describe(n), ": nested twosided BSDFs");
+      // A nested twosided is the identity here: wi is already on the front side.
       m.flags |= MATERIAL_TWOSIDED;
     } else {
       if (m.flags & MATERIAL_MASKED) fail(n.loc, describe(n), ": nested mask BSDFs");
@@ -386,11 +467,7 @@ Material SceneBuilder::build_principled(Node& n) {
   m.param[PRINCIPLED_SAMPLING_RATES] =
       constant_value(glm::dvec3(srate_diffuse, srate_specular, srate_clearcoat));
 
-  // Mitsuba's get_flag: a lobe is on when its parameter is given and not the constant 0.
-  Property* st = find_property(n, "spec_trans");
-  bool has_spec_trans =
-      st && !((st->kind == PropertyKind::Float || st->kind == PropertyKind::Integer) &&
-              (st->kind == PropertyKind::Float ? st->number : double(st->integer)) == 0.0);
+  bool has_spec_trans = principled_has_spec_trans(n);
   double eta;
   if (has_property(n, "eta") && has_property(n, "specular"))
     fail(find_property(n, "eta")->loc, describe(n), ": give either 'eta' or 'specular', not both");

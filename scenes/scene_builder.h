@@ -13,6 +13,10 @@
 
 namespace tr {
 
+// Mitsuba's bitmap `format` (src/textures/bitmap.cpp): the precision texels are stored in. Auto
+// stores sources of at most 16 bits per channel in half precision, others in float.
+enum class TexelFormat { Auto, Variant, Float16 };
+
 // A shape waiting for its final index: top-level shapes come first in SceneBuffers::shapes
 // (instance 0), then each shapegroup's shapes.
 struct PendingShape {
@@ -60,7 +64,7 @@ class SceneBuilder {
   // Linear RGBA texels of an image file appended to texels (shared between identical loads);
   // returns the first texel and the size.
   std::pair<uint, glm::uvec2> load_texels(Node& owner, const std::string& file_name, bool raw,
-                                          bool scalar);
+                                          bool scalar, TexelFormat format);
   std::string resolve_file(Node& owner, const std::string& name, const char* what);
 
   // ---- shapes (build_shapes.cpp)
