@@ -101,6 +101,9 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   if (std::abs(glm::determinant(glm::dmat3(to_world))) == 0.0)
     fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
   if (take_bool(n, "flip_normals", false)) r.flags |= SHAPE_FLIP_NORMALS;
+  // Read by every Mitsuba shape (shape.cpp); it weighs silhouette sampling in differentiable
+  // rendering only, so it changes nothing here.
+  take_float(n, "silhouette_sampling_weight", 1.0);
 
   std::vector<Property*> bsdfs = take_objects(n, "bsdf");
   if (bsdfs.size() > 1) fail(bsdfs[1]->loc, describe(n), " has more than one BSDF");
@@ -113,6 +116,9 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
     if (in_group) fail(e.loc, "emitters inside a <shapegroup> are not supported");
     if (e.type != "area")
       fail(e.loc, "a shape can only carry an \"area\" emitter, not \"", e.type, "\"");
+    if (has_property(e, "to_world"))
+      fail(find_property(e, "to_world")->loc, describe(e),
+           ": an area emitter takes its shape's transform; to_world is refused (as in Mitsuba)");
     Property* rad = find_property(e, "radiance");
     if (rad && rad->kind == PropertyKind::Object)
       fail(rad->loc, describe(e), ": textured radiance is not supported");
@@ -130,9 +136,8 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   bool from_file = type == "obj" || type == "ply" || type == "serialized";
   if (from_file || type == "rectangle" || type == "cube") {
     r.type = SHAPE_MESH;
-    bool face_normals = false;
+    bool face_normals = take_bool(n, "face_normals", false);  // every Mitsuba mesh reads it
     if (from_file) {
-      face_normals = take_bool(n, "face_normals", false);
       s.mesh = mesh_file(n);
     } else {
       s.mesh = type == "rectangle" ? make_rectangle() : make_cube();

@@ -109,7 +109,9 @@ std::string take_string(Node& node, const std::string& name) {
 glm::dvec3 take_point(Node& node, const std::string& name, glm::dvec3 default_value) {
   Property* p = take(node, name);
   if (!p) return default_value;
-  if (p->kind != PropertyKind::Point) wrong_type(node, *p, "a point");
+  // Mitsuba's <point> and <vector> are one property type.
+  if (p->kind != PropertyKind::Point && p->kind != PropertyKind::Vector)
+    wrong_type(node, *p, "a point");
   return p->vec;
 }
 

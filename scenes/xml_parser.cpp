@@ -35,6 +35,14 @@ const std::set<std::string> OBJECT_TAGS = {"shape",      "bsdf",   "texture", "e
                                            "integrator", "medium", "phase",   "volume"};
 const int MAX_INCLUDE_DEPTH = 15;
 
+// Parameters that Mitsuba's plugins read as unbounded textures or IORs, so that their colors
+// may leave [0, 1]: conductor eta/k (conductor.cpp get_unbounded_texture), microfacet alphas
+// (roughconductor.cpp, roughdielectric.cpp), int_ior/ext_ior (ior.h).
+bool unbounded_parameter(const std::string& name) {
+  return name == "eta" || name == "k" || name == "int_ior" || name == "ext_ior" ||
+         name == "alpha" || name == "alpha_u" || name == "alpha_v";
+}
+
 // One XML file: its text (for offset -> line) and its directory.
 struct Source {
   std::string display;  // file name used in messages
@@ -376,12 +384,10 @@ class Parser {
           parse_doubles(required_attr(x, "value", src), 3, true, loc, "rgb '" + p.name + "'");
       p.kind = PropertyKind::Color;
       p.vec = glm::dvec3(v[0], v[1], v[2]);
-      // Mitsuba's srgb texture rejects reflectance-like colors outside [0, 1] (emitter values
-      // and eta/k/int_ior/ext_ior are unbounded).
-      bool unbounded = within_emitter || p.name == "eta" || p.name == "k" || p.name == "int_ior" ||
-                       p.name == "ext_ior";
-      if (!unbounded && (glm::any(glm::lessThan(p.vec, glm::dvec3(0.0))) ||
-                         glm::any(glm::greaterThan(p.vec, glm::dvec3(1.0)))))
+      // Mitsuba's srgb texture rejects reflectance-like colors outside [0, 1].
+      if (!within_emitter && !unbounded_parameter(p.name) &&
+          (glm::any(glm::lessThan(p.vec, glm::dvec3(0.0))) ||
+           glm::any(glm::greaterThan(p.vec, glm::dvec3(1.0)))))
         fail(loc, "rgb '", p.name, "' = (", v[0], ", ", v[1], ", ", v[2],
              ") must lie in [0, 1]: it is a reflectance-like value (Mitsuba rejects it too)");
     } else if (tag == "spectrum") {
@@ -495,10 +501,9 @@ class Parser {
   glm::dvec3 parse_spectrum(const pugi::xml_node& x, const Source& src, const std::string& name,
                             bool within_emitter) {
     Location loc = src.at(x);
-    bool unbounded = name == "eta" || name == "k" || name == "int_ior" || name == "ext_ior";
-    SpectrumUse use = unbounded        ? SpectrumUse::Unbounded
-                      : within_emitter ? SpectrumUse::Emission
-                                       : SpectrumUse::Reflectance;
+    SpectrumUse use = unbounded_parameter(name) ? SpectrumUse::Unbounded
+                      : within_emitter          ? SpectrumUse::Emission
+                                                : SpectrumUse::Reflectance;
     bool has_value = has_attr(x, "value"), has_file = has_attr(x, "filename");
     if (has_value == has_file)
       fail(loc, "<spectrum> requires exactly one of 'value' and 'filename'");

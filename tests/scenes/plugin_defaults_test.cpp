@@ -448,5 +448,46 @@ TEST(PluginDefaults, ConstantRadianceIsOne) {
   EXPECT_EQ(s.buffers.emitters[0].radiance, vec3(1.0f));
 }
 
+// Shape parameters Mitsuba's Shape and Mesh bases read for every shape (shape.cpp, mesh.cpp),
+// and the unbounded microfacet alphas (roughconductor.cpp get_unbounded_texture).
+namespace shapes {
+
+Scene load_shape(const std::string& shape) {
+  return load_scene(write_file(fresh_dir(), "scene.xml", scene_xml(shape)), {});
+}
+
+TEST(PluginDefaults, ShapeBaseParameters) {
+  Scene a = load_shape("<shape type=\"sphere\"><point name=\"center\" value=\"1 2 3\"/></shape>");
+  Scene b = load_shape("<shape type=\"sphere\"><vector name=\"center\" value=\"1 2 3\"/></shape>");
+  EXPECT_TRUE(same_bytes(a.buffers.shapes, b.buffers.shapes));
+  Scene c = load_shape(
+      "<shape type=\"sphere\"><float name=\"silhouette_sampling_weight\" value=\"3\"/></shape>");
+  Scene d = load_shape("<shape type=\"sphere\"/>");
+  EXPECT_TRUE(same_bytes(c.buffers.shapes, d.buffers.shapes));
+  // A rectangle with face normals is shaded flat: no vertex normals.
+  Scene flat = load_shape(
+      "<shape type=\"rectangle\"><boolean name=\"face_normals\" value=\"true\"/></shape>");
+  Scene smooth = load_shape("<shape type=\"rectangle\"/>");
+  EXPECT_EQ(flat.buffers.shapes[0].flags & SHAPE_HAS_NORMALS, 0u);
+  EXPECT_NE(smooth.buffers.shapes[0].flags & SHAPE_HAS_NORMALS, 0u);
+  expect_error(
+      "<shape type=\"sphere\"><emitter type=\"area\"><transform name=\"to_world\"><translate "
+      "x=\"1\"/></transform></emitter></shape>",
+      "an area emitter takes its shape's transform");
+}
+
+TEST(PluginDefaults, MicrofacetAlphaIsUnbounded) {
+  Scene s = load_shape(
+      "<shape type=\"sphere\"><bsdf type=\"roughconductor\"><rgb name=\"alpha\" value=\"1.5\"/>"
+      "</bsdf></shape>");
+  EXPECT_EQ(s.buffers.materials.size(), 1u);
+  expect_error(
+      "<shape type=\"sphere\"><bsdf type=\"diffuse\"><rgb name=\"reflectance\" value=\"1.5\"/>"
+      "</bsdf></shape>",
+      "must lie in [0, 1]");
+}
+
+}  // namespace shapes
+
 }  // namespace
 }  // namespace tr
