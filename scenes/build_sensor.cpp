@@ -174,11 +174,33 @@ void SceneBuilder::add_sensor(Node& s) {
   check_consumed(s);
 }
 
+namespace {
+
+// Parameters of Mitsuba's Integrator and SamplingIntegrator bases (src/render/integrator.cpp).
+// block_size and samples_per_pass only split the work into tiles and passes: twinray's
+// estimate does not depend on either. A positive timeout stops Mitsuba's render early, which
+// twinray never does, so it is refused.
+void take_sampling_integrator_base(Node& m) {
+  if (take_float(m, "timeout", -1.0) > 0.0)
+    fail(find_property(m, "timeout")->loc, describe(m),
+         ": a timeout would stop the render early; twinray renders every sample (refused)");
+  if (take_integer(m, "block_size", 0) < 0)
+    fail(find_property(m, "block_size")->loc, describe(m), ": block_size must not be negative");
+  if (has_property(m, "samples_per_pass") && take_integer(m, "samples_per_pass", 1) <= 0)
+    fail(find_property(m, "samples_per_pass")->loc, describe(m),
+         ": samples_per_pass must be positive");
+}
+
+}  // namespace
+
 void SceneBuilder::add_integrator(Node& n) {
   Node* inner = &n;
   if (n.type == "moment") {
     std::vector<Property*> nested = take_objects(n, "integrator");
-    if (nested.size() != 1) fail(n.loc, describe(n), " must wrap exactly one integrator");
+    if (nested.size() != 1)
+      fail(n.loc, describe(n),
+           " must wrap exactly one integrator (twinray writes no AOV channels of several)");
+    take_sampling_integrator_base(n);
     check_consumed(n);
     inner = nested[0]->object.get();
   }
@@ -221,6 +243,7 @@ void SceneBuilder::add_integrator(Node& n) {
     fail(m.loc, "unknown integrator type \"", m.type, "\" (supported: path, direct, moment)");
   }
   it.hide_emitters = take_bool(m, "hide_emitters", false) ? 1u : 0u;
+  take_sampling_integrator_base(m);
   check_consumed(m);
   scene_.integrator_name = n.type == "moment" ? "moment(" + m.type + ")" : m.type;
 }

@@ -487,6 +487,32 @@ TEST(PluginDefaults, MicrofacetAlphaIsUnbounded) {
       "must lie in [0, 1]");
 }
 
+// Mitsuba's Integrator/SamplingIntegrator bases (integrator.cpp): timeout -1, block_size 0,
+// samples_per_pass unset; tiling and passes do not change twinray's estimate.
+TEST(PluginDefaults, IntegratorBaseParameters) {
+  const std::string plain = "<integrator type=\"path\"/>";
+  Scene a = load_shape(plain);
+  for (const std::string& p :
+       {flt("timeout", "-1"), std::string("<integer name=\"block_size\" value=\"32\"/>"),
+        std::string("<integer name=\"samples_per_pass\" value=\"4\"/>")}) {
+    Scene b = load_shape("<integrator type=\"path\">" + p + "</integrator>");
+    EXPECT_EQ(std::memcmp(&a.buffers.globals.integrator, &b.buffers.globals.integrator,
+                          sizeof(Integrator)),
+              0)
+        << p;
+  }
+  Scene m = load_shape(
+      "<integrator type=\"moment\"><integer name=\"block_size\" value=\"16\"/>"
+      "<integrator type=\"path\"/></integrator>");
+  EXPECT_EQ(m.integrator_name, "moment(path)");
+  expect_error("<integrator type=\"path\">" + flt("timeout", "10") + "</integrator>",
+               "a timeout would stop the render early");
+  expect_error(
+      "<integrator type=\"moment\"><integrator type=\"path\"/><integrator "
+      "type=\"direct\"/></integrator>",
+      "must wrap exactly one integrator");
+}
+
 }  // namespace shapes
 
 }  // namespace
