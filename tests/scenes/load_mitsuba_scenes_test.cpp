@@ -1,6 +1,7 @@
 // Every Mitsuba reference scene and the default Cornell box load, with the values they imply.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "core/material_slots.h"
@@ -77,6 +78,29 @@ TEST(LoadMitsubaScenes, ArealightSceneValues) {
   for (const Material& m : b.materials)
     diamond |= m.type == BSDF_DIELECTRIC && std::abs(m.eta - 2.419f / 1.000277f) < 1e-6f;
   EXPECT_TRUE(diamond);
+}
+
+// Mitsuba's canonical Cornell box, exactly as shipped: its area emitter is declared after the
+// shapes that <ref> it, its perspective sensor sets near/far clip and focus_distance.
+TEST(LoadMitsubaScenes, MitsubaCornellBoxLoadsUnchanged) {
+  fs::path file = fs::path(SHARED) / "perf" / "mitsuba-cbox" / "cbox-rgb.xml";
+  ASSERT_TRUE(fs::exists(file)) << file << " is missing: the Mitsuba Cornell box ships in shared/";
+  LoadOptions options;
+  options.defines["res"] = "64";
+  Scene s = load_scene(file.string(), options);
+  const SceneBuffers& b = s.buffers;
+  EXPECT_EQ(s.spp, 256u);
+  EXPECT_EQ(s.integrator_name, "path");
+  EXPECT_EQ(b.globals.integrator.max_depth, 6);
+  EXPECT_EQ(b.globals.camera.width, 64u);
+  EXPECT_FLOAT_EQ(b.globals.camera.near_clip, 10.0f);
+  EXPECT_FLOAT_EQ(b.globals.camera.far_clip, 2800.0f);
+  // fov 39.3077 degrees along the smaller axis of a square film.
+  EXPECT_NEAR(b.globals.camera.tan_half_fov.x, std::tan(39.3077 * M_PI / 360.0), 1e-6);
+  ASSERT_EQ(b.emitters.size(), 1u);
+  EXPECT_EQ(b.emitters[0].type, EMITTER_AREA);
+  EXPECT_EQ(b.emitters[0].radiance, vec3(18.387f, 10.9873f, 2.75357f));
+  EXPECT_EQ(b.shapes.size(), 8u);
 }
 
 }  // namespace
