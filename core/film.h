@@ -38,55 +38,46 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE float filter_table_value(Camera c, uint i) { return c.filter_table[i >> 2u][i & 3u]; }
+INLINE float filter_table_value(const vec4 table[8], uint i) { return table[i >> 2u][i & 3u]; }
 
-// Bin k of one axis (k < 31: the negative side, table entry 30 - k; else entry k - 31): its
-// interval [a, a + h) of offsets x - c and its table entry.
+// The bins of one axis, in order of x: bin k in [0, 62) covers [-r + k h, -r + (k + 1) h),
+// h = r / 31, and holds table entry 30 - k (k < 31) or k - 31. Camera.filter_cdf[k] is the
+// mass of |f_d| before bin k (k = 0 .. 62), filled by the loader (filter_cdf_entry).
 INLINE uint filter_bin_entry(uint k) {
   return k < FILTER_RESOLUTION ? FILTER_RESOLUTION - 1u - k : k - FILTER_RESOLUTION;
 }
 
-INLINE float filter_bin_start(uint k, float h) {
-  return k < FILTER_RESOLUTION ? -float(FILTER_RESOLUTION - k) * h
-                               : float(k - FILTER_RESOLUTION) * h;
-}
+INLINE float filter_cdf_value(const vec4 cdf[16], uint k) { return cdf[k >> 2u][k & 3u]; }
 
-// |f_d| times the length of bin k clipped to [lo, hi).
-INLINE float filter_bin_mass(Camera c, uint k, float lo, float hi) {
-  float h = c.filter_radius / float(FILTER_RESOLUTION);
-  float a = filter_bin_start(k, h);
-  float len = max(min(a + h, hi) - max(a, lo), 0.0f);
-  return abs(filter_table_value(c, filter_bin_entry(k))) * len;
+// M(x): the mass of |f_d| on [-r, x], for the table and cumulative masses of a filter of
+// radius r.
+INLINE float filter_cumulative(const vec4 table[8], const vec4 cdf[16], float r, float x) {
+  float h = r / float(FILTER_RESOLUTION);
+  float t = clamp(x, -r, r);
+  uint k = min(uint((t + r) / h), 2u * FILTER_RESOLUTION - 1u);
+  float start = -r + float(k) * h;
+  return filter_cdf_value(cdf, k) +
+         abs(filter_table_value(table, filter_bin_entry(k))) * max(t - start, 0.0f);
 }
 
 // One axis: an offset x in [lo, hi) from the pixel centre with density proportional to
-// |f_d(x)| there, and the sign of f_d(x). u picks the bin (the last one with mass whose
-// cumulative start is <= u times the total, so rounding never picks an empty bin), then x is
-// uniform within the bin's clipped interval.
-INLINE float sample_filter_axis(Camera c, float u, float lo, float hi, OUT(float) sign) {
-  const uint bins = 2u * FILTER_RESOLUTION;
-  float total = 0.0f;
-  for (uint k = 0u; k < bins; ++k) total += filter_bin_mass(c, k, lo, hi);
-  float target = u * total;
-  float before = 0.0f;
-  uint chosen = 0u;
-  float chosen_before = 0.0f;
-  float chosen_mass = 0.0f;
-  for (uint k = 0u; k < bins; ++k) {
-    float mass = filter_bin_mass(c, k, lo, hi);
-    if (mass > 0.0f && target >= before) {
-      chosen = k;
-      chosen_before = before;
-      chosen_mass = mass;
-    }
-    before += mass;
-  }
-  float h = c.filter_radius / float(FILTER_RESOLUTION);
-  float a = max(filter_bin_start(chosen, h), lo);
-  float b = min(filter_bin_start(chosen, h) + h, hi);
-  float v = clamp((target - chosen_before) / chosen_mass, 0.0f, ONE_MINUS_EPSILON);
-  sign = filter_table_value(c, filter_bin_entry(chosen)) < 0.0f ? -1.0f : 1.0f;
-  return a + v * (b - a);
+// |f_d(x)| there, and the sign of f_d(x), by inverting M between M(lo) and M(hi): the bin is
+// the last one whose start mass is <= the target (never an empty one), x is linear within it.
+INLINE float sample_filter_axis(const vec4 table[8], const vec4 cdf[16], float r, float u, float lo,
+                                float hi, OUT(float) sign) {
+  float m_lo = filter_cumulative(table, cdf, r, lo);
+  float target = m_lo + u * (filter_cumulative(table, cdf, r, hi) - m_lo);
+  const uint last = 2u * FILTER_RESOLUTION;
+  uint k = 0u;
+  for (uint step = 32u; step > 0u; step >>= 1u)
+    if (k + step <= last && filter_cdf_value(cdf, k + step) <= target) k += step;
+  k = min(k, last - 1u);
+  float h = r / float(FILTER_RESOLUTION);
+  float start = -r + float(k) * h;
+  float f = filter_table_value(table, filter_bin_entry(k));
+  float x = abs(f) > 0.0f ? start + (target - filter_cdf_value(cdf, k)) / abs(f) : start;
+  sign = f < 0.0f ? -1.0f : 1.0f;
+  return clamp(x, max(start, lo), min(start + h, hi));
 }
 
 // Position on the film (full-film pixels) of a sample of `pixel` (crop-window pixels) and its
@@ -101,8 +92,8 @@ INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) sign)
   vec2 hi = c.sample_max - center;
   float sx;
   float sy;
-  float x = sample_filter_axis(c, u.x, lo.x, hi.x, sx);
-  float y = sample_filter_axis(c, u.y, lo.y, hi.y, sy);
+  float x = sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.x, lo.x, hi.x, sx);
+  float y = sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.y, lo.y, hi.y, sy);
   sign = sx * sy;
   return center + vec2(x, y);
 }

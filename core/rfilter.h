@@ -87,6 +87,17 @@ INLINE float rfilter_table_entry(uint type, vec4 params, float radius, uint i) {
   return rfilter_eval(type, params, (radius * float(i)) / float(FILTER_RESOLUTION));
 }
 
+// Mass of |f_d| before bin k of an axis (core/film.h: bins in order of x, entry 30 - j for
+// j < 31, else j - 31, each of width radius / 31).
+INLINE float filter_cdf_entry(const vec4 table[8], float radius, uint k) {
+  float sum = 0.0f;
+  for (uint j = 0u; j < k; ++j) {
+    uint i = j < FILTER_RESOLUTION ? FILTER_RESOLUTION - 1u - j : j - FILTER_RESOLUTION;
+    sum += abs(table[i >> 2u][i & 3u]);
+  }
+  return sum * (radius / float(FILTER_RESOLUTION));
+}
+
 TR_NAMESPACE_END
 
 #endif

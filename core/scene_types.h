@@ -183,6 +183,7 @@ struct Camera {
   uint pad0;
   uint pad1;
   vec4 filter_table[8];  // Mitsuba's discretized filter, entries 0..31 (core/rfilter.h)
+  vec4 filter_cdf[16];   // cumulative |filter| over the 62 bins of an axis (core/film.h)
 };
 
 struct Integrator {

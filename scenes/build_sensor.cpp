@@ -119,6 +119,8 @@ void reconstruction_filter(Node& rf, Camera& cam) {
     cam.filter_table[i / 4][i % 4] = v;
     integral += 2.0 * double(v) * (double(cam.filter_radius) / FILTER_RESOLUTION);
   }
+  for (uint k = 0; k <= 2 * FILTER_RESOLUTION; ++k)
+    cam.filter_cdf[k / 4][k % 4] = filter_cdf_entry(cam.filter_table, cam.filter_radius, k);
   if (!(integral > 0.0)) fail(rf.loc, describe(rf), ": the filter must have a positive integral");
 }
 

@@ -75,6 +75,8 @@ Camera make_camera(const FilmSetup& f) {
   c.filter_scale = float(FILTER_RESOLUTION) / f.radius;
   for (uint i = 0; i <= FILTER_RESOLUTION; ++i)
     c.filter_table[i / 4][i % 4] = rfilter_table_entry(f.type, f.params, f.radius, i);
+  for (uint k = 0; k <= 2 * FILTER_RESOLUTION; ++k)
+    c.filter_cdf[k / 4][k % 4] = filter_cdf_entry(c.filter_table, f.radius, k);
   // Mitsuba's border_size (src/core/rfilter.cpp).
   float border = f.sample_border ? std::ceil(f.radius - 0.5f - 2.0f * 1500.0f * 0x1p-24f) : 0.0f;
   c.sample_min = c.crop_offset - vec2(border);
@@ -85,7 +87,7 @@ Camera make_camera(const FilmSetup& f) {
 // eval_discretized (include/mitsuba/core/rfilter.h), in float like Mitsuba.
 float mitsuba_discretized(const Camera& c, float x) {
   uint index = std::min(uint(std::abs(x * c.filter_scale)), FILTER_RESOLUTION);
-  return filter_table_value(c, index);
+  return filter_table_value(c.filter_table, index);
 }
 
 // Mitsuba's splatting rule for samples at the centres of an m x m grid of cells in each pixel
@@ -131,11 +133,12 @@ double axis_integral(const Camera& c, const FilmSetup& f, double center, double 
                      bool table) {
   double h = double(c.filter_radius) / FILTER_RESOLUTION, sum = 0.0;
   for (uint k = 0; k < 2 * FILTER_RESOLUTION; ++k) {
-    double a = std::max(double(filter_bin_start(k, float(h))), lo);
-    double b = std::min(double(filter_bin_start(k, float(h))) + h, hi);
+    double a = std::max((-double(c.filter_radius) + k * h), lo);
+    double b = std::min((-double(c.filter_radius) + k * h) + h, hi);
     if (b <= a) continue;
     if (table) {
-      sum += filter_table_value(c, filter_bin_entry(k)) * (G(center + b) - G(center + a));
+      sum +=
+          filter_table_value(c.filter_table, filter_bin_entry(k)) * (G(center + b) - G(center + a));
     } else {
       const int steps = 64;
       for (int i = 0; i < steps; ++i) {
@@ -184,9 +187,10 @@ void axis_expectation(const Camera& c, float lo, float hi, float center,
   std::vector<double> mass(2 * FILTER_RESOLUTION);
   double total = 0.0;
   for (uint k = 0; k < mass.size(); ++k) {
-    double a = std::max(double(filter_bin_start(k, float(h))), double(lo));
-    double b = std::min(double(filter_bin_start(k, float(h))) + h, double(hi));
-    mass[k] = std::max(b - a, 0.0) * std::abs(filter_table_value(c, filter_bin_entry(k)));
+    double a = std::max((-double(c.filter_radius) + k * h), double(lo));
+    double b = std::min((-double(c.filter_radius) + k * h) + h, double(hi));
+    mass[k] =
+        std::max(b - a, 0.0) * std::abs(filter_table_value(c.filter_table, filter_bin_entry(k)));
     total += mass[k];
   }
   sg.assign(g.size(), 0.0);
@@ -197,7 +201,8 @@ void axis_expectation(const Camera& c, float lo, float hi, float center,
     for (int i = 0; i < 4 && width > 0.0; ++i) {
       float sign;
       const float u = float(start + 0.5 * width * (1.0 + node[i]));
-      const float x = sample_filter_axis(c, u, lo, hi, sign);
+      const float x =
+          sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u, lo, hi, sign);
       s += 0.5 * width * weight[i] * sign;
       for (size_t j = 0; j < g.size(); ++j)
         sg[j] += 0.5 * width * weight[i] * sign * g[j](center + x);
@@ -293,9 +298,11 @@ TEST(FilmEstimator, PositionComposesTheTwoAxes) {
     float sign, sign_x, sign_y;
     const vec2 p = sample_film_position(c, pixel, u, sign);
     const float tx =
-        sample_filter_axis(c, u.x, c.sample_min.x - center.x, c.sample_max.x - center.x, sign_x);
+        sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.x,
+                           c.sample_min.x - center.x, c.sample_max.x - center.x, sign_x);
     const float ty =
-        sample_filter_axis(c, u.y, c.sample_min.y - center.y, c.sample_max.y - center.y, sign_y);
+        sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.y,
+                           c.sample_min.y - center.y, c.sample_max.y - center.y, sign_y);
     EXPECT_EQ(p, center + vec2(tx, ty));
     EXPECT_EQ(sign, sign_x * sign_y);
     EXPECT_TRUE(p.x >= c.sample_min.x && p.x <= c.sample_max.x && p.y >= c.sample_min.y &&
