@@ -8,6 +8,7 @@
 //     if (sr.enabled != 0u && <sr.ray unoccluded>) integrator_add_unoccluded(s, sr);
 //   }
 //   vec3 L = integrator_result(s);   // reject (count, score 0) if !radiance_is_finite(L)
+//   <accumulate L with the positive or, if integrator_negative(s), the negative samples>
 //
 // `path` (src/integrators/path.cpp): unidirectional path tracing; at each vertex one emitter
 // sample and one BSDF sample combined by the power heuristic (Veach 1997 §9.2), Russian
@@ -32,6 +33,7 @@
 #include "core/bsdf.h"
 #include "core/camera.h"
 #include "core/emitter.h"
+#include "core/film.h"
 #include "core/integrators/path_state.h"
 #include "core/interaction.h"
 #include "core/mis.h"
@@ -43,7 +45,7 @@ INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
   Camera c = g.camera;
   PathState s;
   s.rng = rng_init(pixel.y * c.width + pixel.x, sample_index, seed);
-  vec2 film = sample_film_position(c, pixel, rng_next_2d(s.rng), s.filter_weight);
+  vec2 film = sample_film_position(c, pixel, rng_next_2d(s.rng), s.film_sign);
   s.ray = camera_ray(c, film, rng_next_2d(s.rng));
   s.throughput = vec3(1.0f);
   s.eta = 1.0f;
@@ -198,7 +200,11 @@ INLINE void integrator_add_unoccluded(INOUT(PathState) s, ShadowRay sr) {
   s.radiance += sr.contribution;
 }
 
-INLINE vec3 integrator_result(PathState s) { return s.radiance * s.filter_weight; }
+INLINE vec3 integrator_result(PathState s) { return s.radiance; }
+
+// Whether the sample enters its pixel's estimate with a negative sign (a negative lobe of the
+// reconstruction filter, core/film.h); the backends keep such samples apart.
+INLINE bool integrator_negative(PathState s) { return s.film_sign < 0.0f; }
 
 INLINE bool radiance_is_finite(vec3 L) { return !any(isnan(L)) && !any(isinf(L)); }
 

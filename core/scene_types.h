@@ -145,29 +145,45 @@ struct AliasEntry {
 // ---- Camera, film, integrator ----------------------------------------------------------
 const uint SENSOR_PERSPECTIVE = 0u;
 const uint SENSOR_THINLENS = 1u;
+const uint SENSOR_ORTHOGRAPHIC = 2u;
 
+// Reconstruction filters (core/rfilter.h). Every filter but the box is sampled through its
+// table (core/film.h).
 const uint RFILTER_BOX = 0u;
 const uint RFILTER_GAUSSIAN = 1u;
+const uint RFILTER_TENT = 2u;
+const uint RFILTER_MITCHELL = 3u;
+const uint RFILTER_CATMULLROM = 4u;
+const uint RFILTER_LANCZOS = 5u;
 
 const uint INTEGRATOR_PATH = 0u;
 const uint INTEGRATOR_DIRECT = 1u;
 
+// Positions on the film are in pixels of the full film, origin at its top-left corner.
 struct Camera {
   vec4 to_world[3];  // camera->world; camera looks along +z, +x left, +y up (Mitsuba)
   uint type;         // SENSOR_*
-  uint width;        // film size in pixels
+  uint width;        // rendered image (the film's crop window) in pixels
   uint height;
-  uint rfilter;          // RFILTER_*
-  vec2 tan_half_fov;     // tan of half the field of view along x and y
+  uint rfilter;  // RFILTER_*
+  // Camera-space half-size of the image rectangle: at z = 1 (perspective, thinlens: the
+  // tangents of half the fields of view) or on the near plane (orthographic).
+  vec2 half_extent;
   vec2 principal_point;  // Mitsuba principal_point_offset_{x,y}, in fractions of the film
   float near_clip;
   float far_clip;
   float aperture_radius;  // thinlens
   float focus_distance;   // thinlens
-  float filter_stddev;    // gaussian
-  float filter_radius;    // gaussian
-  uint crop_offset_x;
-  uint crop_offset_y;
+  vec2 film_size;         // the full film (the frame of the projection)
+  vec2 crop_offset;       // top-left corner of the rendered crop window
+  vec2 sample_min;        // the rectangle sampled (the crop window, widened by the filter's
+  vec2 sample_max;        // border with sample_border)
+  float filter_radius;
+  float filter_scale;  // FILTER_RESOLUTION / filter_radius: table index of |x| (core/film.h)
+  uint pad0;
+  uint pad1;
+  vec4 filter_table[8];  // Mitsuba's discretized filter, entries 0..31 (core/rfilter.h)
+  vec4 filter_cdf[16];   // cumulative |filter| over the 62 bins of an axis (core/film.h)
 };
 
 struct Integrator {

@@ -15,27 +15,22 @@
 #include "core/integrator.h"
 #include "cpu_backend/bound_scene.h"
 #include "cpu_backend/embree_scene.h"
+#include "render/film_moments.h"
 
 namespace tr {
 namespace {
 
 constexpr int kTileSize = 16;
 
-struct PixelMoments {
-  double mean[3] = {0.0, 0.0, 0.0};
-  double m2[3] = {0.0, 0.0, 0.0};
-};
-
 struct ThreadCounts {
   std::uint64_t rays = 0;
   std::uint64_t rejected = 0;
 };
 
-// All samples of one pixel, in order, with Welford's running mean and M2 in double
-// (Welford 1962; Chan, Golub & LeVeque 1979 eq. 1.5).
-PixelMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint seed,
-                          ThreadCounts& counts) {
-  PixelMoments m;
+// All samples of one pixel, in order, accumulated in double (render/film_moments.h).
+FilmMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint seed,
+                         ThreadCounts& counts) {
+  FilmMoments m;
   for (uint i = 0; i < spp; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
     while (integrator_alive(s)) {
@@ -52,12 +47,7 @@ PixelMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint 
       ++counts.rejected;
       L = vec3(0.0f);
     }
-    double n = double(i + 1);
-    for (int c = 0; c < 3; ++c) {
-      double delta = double(L[c]) - m.mean[c];
-      m.mean[c] += delta / n;
-      m.m2[c] += delta * (double(L[c]) - m.mean[c]);
-    }
+    add_sample(integrator_negative(s) ? m.negative : m.positive, L);
   }
   return m;
 }
@@ -98,12 +88,9 @@ RenderResult render_cpu(const Scene& scene, const RenderOptions& options) {
         ThreadCounts& local = counts.local();
         for (uint y = tile.rows().begin(); y != tile.rows().end(); ++y) {
           for (uint x = tile.cols().begin(); x != tile.cols().end(); ++x) {
-            PixelMoments m = render_pixel(accel, uvec2(x, y), spp, seed, local);
+            FilmMoments m = render_pixel(accel, uvec2(x, y), spp, seed, local);
             size_t base = (size_t(y) * result.width + x) * 3;
-            for (int c = 0; c < 3; ++c) {
-              result.mean[base + c] = m.mean[c];
-              result.variance[base + c] = spp > 1 ? m.m2[c] / double(spp - 1) : 0.0;
-            }
+            develop(m, &result.mean[base], &result.variance[base]);
           }
         }
         std::uint64_t now = done += std::uint64_t(tile.rows().size()) * tile.cols().size() * spp;

@@ -164,8 +164,7 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
       options.progress(static_cast<uint64_t>(merged) * pixels, static_cast<uint64_t>(spp) * pixels);
   }
 
-  result.mean = moments.mean();
-  result.variance = moments.variance();
+  moments.develop(result.mean, result.variance);
   result.stats.samples = static_cast<uint64_t>(spp) * pixels;
   timing.render_seconds = seconds_since(phase);
   result.stats.seconds = timing.build_seconds + timing.render_seconds;

@@ -1,15 +1,15 @@
-// Per-pixel sample mean and sum of squared deviations (M2) in double, merged batch by batch
-// with the pairwise update of Chan, Golub & LeVeque, "Updating Formulae and a Pairwise
-// Algorithm for Computing Sample Variances" (1979), eq. 2.1: for sets A and B,
-//   n = n_A + n_B,  delta = mean_B - mean_A,
-//   mean = mean_A + delta n_B / n,  M2 = M2_A + M2_B + delta^2 n_A n_B / n.
-// This gives RenderResult.mean/variance the CPU backend's Welford semantics.
+// Per-pixel accumulation of the GPU's batches in double: each batch's positive and negative
+// samples (PixelBatch) are merged into render/film_moments.h's groups with the pairwise update
+// of Chan, Golub & LeVeque, "Updating Formulae and a Pairwise Algorithm for Computing Sample
+// Variances" (1979), eq. 2.1, and developed as the CPU backend develops its pixels, so that
+// RenderResult.mean/variance have the same semantics on both backends.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "render/film_moments.h"
 #include "shaders/batch.h"
 
 namespace tr {
@@ -22,15 +22,12 @@ class MomentAccumulator {
   void merge(const PixelBatch* batch, std::uint32_t n_b);
 
   std::uint64_t count() const { return count_; }
-  const std::vector<double>& mean() const { return mean_; }
-  // Unbiased per-sample variance M2 / (n - 1), per pixel and channel; 0 below two samples.
-  std::vector<double> variance() const;
+  // Each pixel's value and per-sample variance (render/film_moments.h develop), per channel.
+  void develop(std::vector<double>& mean, std::vector<double>& variance) const;
 
  private:
-  std::size_t pixels_;
   std::uint64_t count_ = 0;
-  std::vector<double> mean_;
-  std::vector<double> m2_;
+  std::vector<FilmMoments> pixels_;
 };
 
 }  // namespace tr

@@ -34,8 +34,11 @@ struct RenderStats {
   std::uint64_t rejected_nonfinite = 0;  // samples whose radiance was NaN/Inf, counted as 0
 };
 
-// Per pixel, per channel (RGB, row-major, top row first): the sample mean and the unbiased
-// per-sample variance (Mitsuba `moment` semantics), accumulated in double.
+// Per pixel, per channel (RGB, row-major, top row first): the pixel's value and the per-sample
+// variance of its estimate, accumulated in double (render/film_moments.h). For the box filter
+// and filters without negative lobes these are the sample mean and the unbiased per-sample
+// variance (Mitsuba `moment` semantics); with negative lobes, the ratio estimate and its
+// delta-method variance.
 struct RenderResult {
   std::uint32_t width = 0;
   std::uint32_t height = 0;

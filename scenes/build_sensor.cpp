@@ -1,9 +1,11 @@
-// Sensor (perspective, thinlens), film (hdrfilm), reconstruction filter (box, gaussian),
-// sampler (independent) and integrator (path, direct, moment) -> Camera, Integrator and the
-// Scene's spp/seed. Defaults as Mitsuba 3 (src/sensors, src/render/sensor.cpp, src/films,
-// src/rfilters, src/samplers, src/integrators).
+// Sensor (perspective, thinlens, orthographic), film (hdrfilm), reconstruction filter (box,
+// gaussian, tent, mitchell, catmullrom, lanczos), sampler (independent) and integrator (path,
+// direct, moment) -> Camera, Integrator and the Scene's spp/seed. Defaults as Mitsuba 3
+// (src/sensors, src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters,
+// src/samplers, src/integrators).
 #include <cmath>
 
+#include "core/rfilter.h"
 #include "scenes/scene_builder.h"
 #include "scenes/values.h"
 
@@ -61,15 +63,96 @@ double horizontal_fov(Node& s, double aspect) {
   return result;
 }
 
+// The film's reconstruction filter into Camera.rfilter, filter_radius and Mitsuba's table
+// (src/rfilters/*.cpp for the parameters and radii; core/rfilter.h for the table).
+void reconstruction_filter(Node& rf, Camera& cam) {
+  auto positive = [&](const char* name, double default_value) {
+    double v = take_float(rf, name, default_value);
+    if (!(v > 0.0) || !std::isfinite(v))
+      fail(find_property(rf, name)->loc, describe(rf), ": ", name, " must be positive");
+    return v;
+  };
+  vec4 params(0.0f);
+  double radius;
+  if (rf.type == "box") {
+    cam.rfilter = RFILTER_BOX;
+    radius = 0.5;
+  } else if (rf.type == "gaussian") {
+    cam.rfilter = RFILTER_GAUSSIAN;
+    params.x = float(positive("stddev", 0.5));
+    radius = 4.0 * double(params.x);  // gaussian.cpp: cut off at 4 standard deviations
+  } else if (rf.type == "tent") {
+    cam.rfilter = RFILTER_TENT;
+    params.x = float(positive("radius", 1.0));
+    radius = params.x;
+  } else if (rf.type == "mitchell") {
+    cam.rfilter = RFILTER_MITCHELL;
+    params.x = float(take_float(rf, "B", 1.0 / 3.0));
+    params.y = float(take_float(rf, "C", 1.0 / 3.0));
+    if (!std::isfinite(params.x) || !std::isfinite(params.y))
+      fail(rf.loc, describe(rf), ": B and C must be finite");
+    radius = 2.0;
+  } else if (rf.type == "catmullrom") {
+    cam.rfilter = RFILTER_CATMULLROM;
+    radius = 2.0;
+  } else if (rf.type == "lanczos") {
+    cam.rfilter = RFILTER_LANCZOS;
+    long long lobes = take_integer(rf, "lobes", 3);
+    if (lobes < 1 || lobes > 64)
+      fail(find_property(rf, "lobes")->loc, describe(rf), ": lobes must be in [1, 64]");
+    params.x = float(lobes);
+    radius = double(lobes);
+  } else {
+    fail(rf.loc, "unknown rfilter type \"", rf.type,
+         "\" (supported: box, gaussian, tent, mitchell, catmullrom, lanczos)");
+  }
+  check_consumed(rf);
+  cam.filter_radius = float(radius);
+  // src/core/rfilter.cpp is_box_filter: Mitsuba recognizes the box by its radius alone, so any
+  // filter of radius 0.5 renders as the box (src/render/imageblock.cpp drops it).
+  if (cam.filter_radius == 0.5f) cam.rfilter = RFILTER_BOX;
+  if (cam.rfilter == RFILTER_BOX) return;
+  cam.filter_scale = float(FILTER_RESOLUTION) / cam.filter_radius;
+  double integral = 0.0;
+  for (uint i = 0; i <= FILTER_RESOLUTION; ++i) {
+    float v = rfilter_table_entry(cam.rfilter, params, cam.filter_radius, i);
+    cam.filter_table[i / 4][i % 4] = v;
+    integral += 2.0 * double(v) * (double(cam.filter_radius) / FILTER_RESOLUTION);
+  }
+  for (uint k = 0; k <= 2 * FILTER_RESOLUTION; ++k)
+    cam.filter_cdf[k / 4][k % 4] = filter_cdf_entry(cam.filter_table, cam.filter_radius, k);
+  if (!(integral > 0.0)) fail(rf.loc, describe(rf), ": the filter must have a positive integral");
+}
+
+// Mitsuba's ProjectiveCamera (src/render/sensor.cpp) refuses scale in the camera-to-world
+// transform of perspective and thinlens (Transform::has_scale: the columns of the linear part
+// orthonormal within 1e-3).
+bool has_scale(const glm::dmat4& m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      double dot = 0.0;
+      for (int k = 0; k < 3; ++k) dot += m[i][k] * m[j][k];
+      if (std::abs(dot - (i == j ? 1.0 : 0.0)) > 1e-3) return true;
+    }
+  return false;
+}
+
+Location location_of(Node& n, const std::string& name) {
+  return has_property(n, name) ? find_property(n, name)->loc : n.loc;
+}
+
 }  // namespace
 
 void SceneBuilder::add_sensor(Node& s) {
-  if (s.type != "perspective" && s.type != "thinlens")
-    fail(s.loc, "unknown sensor type \"", s.type, "\" (supported: perspective, thinlens)");
+  if (s.type != "perspective" && s.type != "thinlens" && s.type != "orthographic")
+    fail(s.loc, "unknown sensor type \"", s.type,
+         "\" (supported: perspective, thinlens, orthographic)");
   Camera& cam = b_.globals.camera;
-  cam.type = s.type == "perspective" ? SENSOR_PERSPECTIVE : SENSOR_THINLENS;
+  cam.type = s.type == "perspective" ? SENSOR_PERSPECTIVE
+             : s.type == "thinlens"  ? SENSOR_THINLENS
+                                     : SENSOR_ORTHOGRAPHIC;
 
-  // ---- film and its reconstruction filter
+  // ---- film (src/render/film.cpp, src/films/hdrfilm.cpp) and its reconstruction filter
   std::vector<Property*> films = take_objects(s, "film");
   if (films.size() > 1) fail(films[1]->loc, describe(s), " has more than one film");
   Node default_film = empty_node("film", "hdrfilm", s.loc);
@@ -83,8 +166,11 @@ void SceneBuilder::add_sensor(Node& s) {
             crop_y = take_integer(film, "crop_offset_y", 0);
   long long crop_w = take_integer(film, "crop_width", width),
             crop_h = take_integer(film, "crop_height", height);
-  if (crop_x != 0 || crop_y != 0 || crop_w != width || crop_h != height)
-    fail(film.loc, describe(film), ": crop windows other than the full film are not supported");
+  if (crop_x < 0 || crop_y < 0 || crop_w <= 0 || crop_h <= 0 || crop_x + crop_w > width ||
+      crop_y + crop_h > height)
+    fail(film.loc, describe(film), ": the crop window (offset ", crop_x, ", ", crop_y, ", size ",
+         crop_w, " x ", crop_h, ") must be non-empty and inside the ", width, " x ", height,
+         " film");
   std::string file_format = to_lower(take_string(film, "file_format", "openexr"));
   if (file_format != "openexr" && file_format != "exr")
     fail(find_property(film, "file_format")->loc, describe(film), ": file_format must be openexr");
@@ -97,35 +183,29 @@ void SceneBuilder::add_sensor(Node& s) {
     fail(find_property(film, "component_format")->loc, describe(film), ": component_format \"",
          component_format, "\" is not supported (float16, float32)");
   scene_.film_half = component_format == "float16";
-  if (take_bool(film, "sample_border", false))
-    fail(find_property(film, "sample_border")->loc, describe(film),
-         ": sample_border is not supported");
+  bool sample_border = take_bool(film, "sample_border", false);
   if (take_bool(film, "compensate", false))
     fail(find_property(film, "compensate")->loc, describe(film), ": compensate is not supported");
   take_bool(film, "banner", false);  // accepted and ignored by Mitsuba 3 as well
-  cam.width = uint(width);
-  cam.height = uint(height);
-  cam.crop_offset_x = cam.crop_offset_y = 0u;
 
   std::vector<Property*> rfilters = take_objects(film, "rfilter");
   if (rfilters.size() > 1) fail(rfilters[1]->loc, describe(film), " has more than one rfilter");
   Node default_rfilter = empty_node("rfilter", "gaussian", film.loc);  // Mitsuba's default
-  Node& rf = rfilters.empty() ? default_rfilter : *rfilters[0]->object;
-  if (rf.type == "box") {
-    cam.rfilter = RFILTER_BOX;
-    cam.filter_stddev = 0.0f;
-    cam.filter_radius = 0.5f;
-  } else if (rf.type == "gaussian") {
-    double stddev = take_float(rf, "stddev", 0.5);
-    if (!(stddev > 0.0)) fail(rf.loc, describe(rf), ": stddev must be positive");
-    cam.rfilter = RFILTER_GAUSSIAN;
-    cam.filter_stddev = float(stddev);
-    cam.filter_radius = float(4.0 * stddev);  // Mitsuba gaussian.cpp: radius = 4 stddev
-  } else {
-    fail(rf.loc, "unknown rfilter type \"", rf.type, "\" (supported: box, gaussian)");
-  }
-  check_consumed(rf);
+  reconstruction_filter(rfilters.empty() ? default_rfilter : *rfilters[0]->object, cam);
   check_consumed(film);
+
+  cam.width = uint(crop_w);
+  cam.height = uint(crop_h);
+  cam.film_size = vec2(float(width), float(height));
+  cam.crop_offset = vec2(float(crop_x), float(crop_y));
+  // src/render/integrator.cpp: the samples cover the crop window, widened with sample_border
+  // by the filter's border_size() (src/core/rfilter.cpp: ceil(radius - 0.5 - 2 RayEpsilon),
+  // RayEpsilon = 1500 * 2^-24 in float; 0 for the box).
+  float border = 0.0f;
+  if (sample_border && cam.rfilter != RFILTER_BOX)
+    border = std::ceil(cam.filter_radius - 0.5f - 2.0f * (1500.0f * 0x1p-24f));
+  cam.sample_min = cam.crop_offset - vec2(border);
+  cam.sample_max = cam.crop_offset + vec2(float(crop_w), float(crop_h)) + vec2(border);
 
   // ---- sampler
   std::vector<Property*> samplers = take_objects(s, "sampler");
@@ -143,34 +223,58 @@ void SceneBuilder::add_sensor(Node& s) {
   scene_.seed = uint(seed);
   check_consumed(sampler);
 
-  // ---- projection
-  double aspect = double(width) / double(height);
-  double fov_x = horizontal_fov(s, aspect);
-  double tan_x = std::tan(0.5 * fov_x * PI_D / 180.0);
-  cam.tan_half_fov = vec2(float(tan_x), float(tan_x / aspect));
+  // ---- Sensor (src/render/sensor.cpp): shutter_open/close both default to 0.
+  double shutter_open = take_float(s, "shutter_open", 0.0);
+  double shutter_close = take_float(s, "shutter_close", 0.0);
+  if (shutter_close < shutter_open)
+    fail(location_of(s, "shutter_close"), describe(s),
+         ": shutter_close must not be earlier than shutter_open");
+  if (shutter_close > shutter_open)
+    fail(location_of(s, "shutter_close"), describe(s),
+         ": motion blur (shutter_open < shutter_close) is not supported");
+
+  // ---- ProjectiveCamera (src/render/sensor.cpp): clip planes and focus_distance, read by
+  // every projective camera (perspective accepts it and, like Mitsuba, ignores it).
   double near_clip = take_float(s, "near_clip", 1e-2), far_clip = take_float(s, "far_clip", 1e4);
-  if (!(near_clip > 0.0)) fail(s.loc, describe(s), ": near_clip must be positive");
-  if (!(far_clip > near_clip)) fail(s.loc, describe(s), ": far_clip must exceed near_clip");
+  if (!(near_clip > 0.0))
+    fail(location_of(s, "near_clip"), describe(s), ": near_clip must be positive");
+  if (!(far_clip > near_clip) || !std::isfinite(far_clip))
+    fail(location_of(s, "far_clip"), describe(s), ": far_clip must be finite and exceed near_clip");
   cam.near_clip = float(near_clip);
   cam.far_clip = float(far_clip);
-  double shutter_open = take_float(s, "shutter_open", 0.0);
-  if (take_float(s, "shutter_close", shutter_open) != shutter_open)
-    fail(s.loc, describe(s), ": motion blur (shutter_open < shutter_close) is not supported");
+  double focus = take_float(s, "focus_distance", double(float(far_clip)));
+  glm::dmat4 to_world = take_transform(s, "to_world");
+  store_rows(to_world, cam.to_world);
+
+  double aspect = double(width) / double(height);
   cam.principal_point = vec2(0.0f);
   cam.aperture_radius = 0.0f;
-  cam.focus_distance = float(far_clip);
-  if (s.type == "perspective") {
+  cam.focus_distance = 0.0f;
+  if (cam.type == SENSOR_ORTHOGRAPHIC) {
+    // include/mitsuba/render/sensor.h orthographic_projection: x in [-1, 1], y in
+    // [-1/aspect, 1/aspect] on the near plane.
+    cam.half_extent = vec2(1.0f, float(1.0 / aspect));
+  } else {
+    if (has_scale(to_world))
+      fail(location_of(s, "to_world"), describe(s),
+           ": scale factors in the camera-to-world transform are not allowed (Mitsuba)");
+    double tan_x = std::tan(0.5 * horizontal_fov(s, aspect) * PI_D / 180.0);
+    cam.half_extent = vec2(float(tan_x), float(tan_x / aspect));
+  }
+  if (cam.type == SENSOR_PERSPECTIVE) {
     cam.principal_point = vec2(float(take_float(s, "principal_point_offset_x", 0.0)),
                                float(take_float(s, "principal_point_offset_y", 0.0)));
-  } else {
+  } else if (cam.type == SENSOR_THINLENS) {
     double aperture = take_float(s, "aperture_radius");
-    double focus = take_float(s, "focus_distance", far_clip);
-    if (!(aperture >= 0.0) || !(focus > 0.0))
-      fail(s.loc, describe(s), ": needs aperture_radius >= 0 and focus_distance > 0");
-    cam.aperture_radius = float(aperture);
+    if (!std::isfinite(aperture))
+      fail(location_of(s, "aperture_radius"), describe(s), ": aperture_radius must be finite");
+    if (!(focus > 0.0) || !std::isfinite(focus))
+      fail(location_of(s, "focus_distance"), describe(s),
+           ": focus_distance must be positive and finite");
+    // thinlens.cpp replaces a zero aperture by dr::Epsilon<float> (with a warning).
+    cam.aperture_radius = aperture == 0.0 ? 0x1p-24f : float(aperture);
     cam.focus_distance = float(focus);
   }
-  store_rows(take_transform(s, "to_world"), cam.to_world);
   check_consumed(s);
 }
 

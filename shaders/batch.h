@@ -14,14 +14,19 @@ struct BatchParams {
   uint pad0;
 };
 
-// One pixel's batch: mean and sum of squared deviations M2 of the batch's samples (Welford
-// 1962, in float), the samples rejected as NaN/Inf (counted as zero radiance) and the rays
-// traced. The host merges batches in double (Chan, Golub & LeVeque 1979).
+// One pixel's batch: mean and sum of squared deviations M2 of the batch's positive and of its
+// negative samples (core/film.h; Welford 1962, in float), how many were negative, the samples
+// rejected as NaN/Inf (counted as zero radiance) and the rays traced. The host merges batches
+// in double (render/film_moments.h).
 struct PixelBatch {
   vec3 mean;
   uint rejected;
   vec3 m2;
   uint rays;
+  vec3 mean_negative;
+  uint negative;
+  vec3 m2_negative;
+  uint pad0;
 };
 
 TR_NAMESPACE_END

@@ -27,15 +27,15 @@ struct PathState {
   vec3 throughput;       // weight of what `ray` finds (path: product of BSDF weights;
                          // direct: the pending BSDF sample's weight)
   float eta;             // product of relative IORs crossed (Russian roulette, Mitsuba)
-  vec3 radiance;         // estimate so far, before the filter weight
+  vec3 radiance;         // estimate so far
   float prev_bsdf_pdf;   // solid-angle pdf of the BSDF sample that produced `ray`
   vec3 prev_p;           // the vertex `ray` leaves from
   uint prev_bsdf_delta;  // whether that BSDF sample came from a delta (or null) lobe
   Rng rng;
   uint depth;  // scattering events so far (Mitsuba's `depth`; path)
   uint alive;
-  uint stage;  // direct: 0 for the camera ray, k for the k-th sampling round
-  float filter_weight;
+  uint stage;           // direct: 0 for the camera ray, k for the k-th sampling round
+  float film_sign;      // +1 or -1: the sample's sign in its pixel's estimate (core/film.h)
   ShadingPoint anchor;  // direct: the camera ray's hit
 };
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "core/camera.h"
+#include "core/film.h"
 #include "gpu_backend/render_gpu.h"
 #include "spirv/probe_raygen.h"
 #include "test_scene.h"
@@ -71,8 +72,8 @@ TEST(GpuHitProbe, ClosestHitsMatchAnalyticReference) {
   const Camera& camera = scene.buffers.globals.camera;
   for (uint y = 0; y < height; ++y)
     for (uint x = 0; x < width; ++x) {
-      float weight;
-      vec2 film = sample_film_position(camera, uvec2(x, y), vec2(0.5f), weight);
+      float sign;
+      vec2 film = sample_film_position(camera, uvec2(x, y), vec2(0.5f), sign);
       Expected e = reference_hit(camera_ray(camera, film, vec2(0.5f)));
       if (e.ambiguous) continue;
       const double* got = &result.mean[3 * (size_t(y) * width + x)];

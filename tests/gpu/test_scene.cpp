@@ -37,8 +37,10 @@ Scene probe_scene(uint width, uint height) {
   c.width = width;
   c.height = height;
   c.rfilter = RFILTER_BOX;
+  c.film_size = vec2(float(width), float(height));
+  c.sample_max = c.film_size;
   const float tan_x = std::tan(0.5f * 60.0f * PI / 180.0f);
-  c.tan_half_fov = vec2(tan_x, tan_x * float(height) / float(width));
+  c.half_extent = vec2(tan_x, tan_x * float(height) / float(width));
   c.near_clip = 0.01f;
   c.far_clip = 1000.0f;
   b.globals.integrator.type = INTEGRATOR_PATH;

@@ -65,7 +65,7 @@ TEST(LoadMitsubaScenes, ArealightSceneValues) {
   EXPECT_EQ(s.integrator_name, "moment(path)");
   EXPECT_EQ(b.globals.integrator.max_depth, 2);
   // Default perspective sensor: 50 mm lens along the diagonal of a square film.
-  EXPECT_NEAR(b.globals.camera.tan_half_fov.x, 0.3059412, 1e-6);
+  EXPECT_NEAR(b.globals.camera.half_extent.x, 0.3059412, 1e-6);
   EXPECT_FLOAT_EQ(b.globals.camera.near_clip, 1.0f);
   ASSERT_EQ(b.emitters.size(), 1u);
   // Spectral area light 400:0, 500:8, 600:15.6, 700:18.4 in Mitsuba's RGB mode.

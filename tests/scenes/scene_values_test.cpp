@@ -43,34 +43,34 @@ TEST(SceneValues, CameraFieldOfView) {
   Camera c = load_sensor("<sensor type=\"perspective\"><float name=\"fov\" value=\"90\"/>" +
                          film(200, 100) + "</sensor>")
                  .buffers.globals.camera;
-  EXPECT_NEAR(c.tan_half_fov.x, 1.0, 1e-6);
-  EXPECT_NEAR(c.tan_half_fov.y, 0.5, 1e-6);
+  EXPECT_NEAR(c.half_extent.x, 1.0, 1e-6);
+  EXPECT_NEAR(c.half_extent.y, 0.5, 1e-6);
   c = load_sensor(
           "<sensor type=\"perspective\"><float name=\"fov\" value=\"90\"/>"
           "<string name=\"fov_axis\" value=\"y\"/>" +
           film(200, 100) + "</sensor>")
           .buffers.globals.camera;
-  EXPECT_NEAR(c.tan_half_fov.x, 2.0, 1e-6);
-  EXPECT_NEAR(c.tan_half_fov.y, 1.0, 1e-6);
+  EXPECT_NEAR(c.half_extent.x, 2.0, 1e-6);
+  EXPECT_NEAR(c.half_extent.y, 1.0, 1e-6);
   // "smaller" is y for a landscape film.
   c = load_sensor(
           "<sensor type=\"perspective\"><float name=\"fov\" value=\"90\"/>"
           "<string name=\"fov_axis\" value=\"smaller\"/>" +
           film(200, 100) + "</sensor>")
           .buffers.globals.camera;
-  EXPECT_NEAR(c.tan_half_fov.y, 1.0, 1e-6);
+  EXPECT_NEAR(c.half_extent.y, 1.0, 1e-6);
   // diagonal: tan(fov/2) is half the diagonal of the unit-distance image plane.
   c = load_sensor(
           "<sensor type=\"perspective\"><float name=\"fov\" value=\"60\"/>"
           "<string name=\"fov_axis\" value=\"diagonal\"/>" +
           film(300, 400) + "</sensor>")
           .buffers.globals.camera;
-  EXPECT_NEAR(std::hypot(c.tan_half_fov.x, c.tan_half_fov.y), std::tan(M_PI / 6), 1e-6);
-  EXPECT_NEAR(c.tan_half_fov.x / c.tan_half_fov.y, 0.75, 1e-6);
+  EXPECT_NEAR(std::hypot(c.half_extent.x, c.half_extent.y), std::tan(M_PI / 6), 1e-6);
+  EXPECT_NEAR(c.half_extent.x / c.half_extent.y, 0.75, 1e-6);
   // Mitsuba's default: a 50 mm lens on 36x24 mm film, measured along the diagonal.
   c = load_sensor("<sensor type=\"perspective\">" + film(48, 48) + "</sensor>")
           .buffers.globals.camera;
-  EXPECT_NEAR(c.tan_half_fov.x, std::sqrt(36.0 * 36 + 24 * 24) / 100.0 / std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(c.half_extent.x, std::sqrt(36.0 * 36 + 24 * 24) / 100.0 / std::sqrt(2.0), 1e-6);
   EXPECT_EQ(c.rfilter, RFILTER_GAUSSIAN);  // Mitsuba's default reconstruction filter
   EXPECT_NEAR(c.filter_radius, 2.0, 1e-6);
 }
