@@ -96,7 +96,7 @@ TEST(LoadMitsubaScenes, MitsubaCornellBoxLoadsUnchanged) {
   EXPECT_FLOAT_EQ(b.globals.camera.near_clip, 10.0f);
   EXPECT_FLOAT_EQ(b.globals.camera.far_clip, 2800.0f);
   // fov 39.3077 degrees along the smaller axis of a square film.
-  EXPECT_NEAR(b.globals.camera.tan_half_fov.x, std::tan(39.3077 * M_PI / 360.0), 1e-6);
+  EXPECT_NEAR(b.globals.camera.half_extent.x, std::tan(39.3077 * M_PI / 360.0), 1e-6);
   ASSERT_EQ(b.emitters.size(), 1u);
   EXPECT_EQ(b.emitters[0].type, EMITTER_AREA);
   EXPECT_EQ(b.emitters[0].radiance, vec3(18.387f, 10.9873f, 2.75357f));

@@ -289,7 +289,7 @@ TEST(Sensor, BadParametersNameTheirLine) {
                           f + "</sensor>",
                       "shutter_close", "motion blur");
   expect_sensor_error("<sensor type=\"fisheye\">\n" + f + "</sensor>", "fisheye",
-                      "unknown sensor type \"fisheye\"");
+                      "not supported by twinray: fisheye (Mitsuba 3 has no such plugin)");
 }
 
 TEST(Sensor, BadFilmAndFilterNameTheirLine) {
@@ -319,7 +319,7 @@ TEST(Sensor, BadFilmAndFilterNameTheirLine) {
                              "value=\"0.3\"/></rfilter>"),
                       "\"B\"", "unused parameter 'B'");
   expect_sensor_error(sensor("<rfilter type=\"bicubic\"/>"), "bicubic",
-                      "unknown rfilter type \"bicubic\"");
+                      "not supported by twinray: bicubic (Mitsuba 3 has no such plugin)");
   expect_sensor_error(sensor("<boolean name=\"compensate\" value=\"true\"/>"), "compensate",
                       "compensate is not supported");
 }
