@@ -13,13 +13,14 @@ namespace tr {
 namespace {
 
 const char* kUsage =
-    "usage: twinray conformance FOLDER [--spp N] [--backend cpu|gpu] [--threads N]\n"
-    "                           [--previews DIR]\n"
+    "usage: twinray conformance FOLDER [--spp N] [-a PATH]... [--backend cpu|gpu]\n"
+    "                           [--threads N] [--previews DIR]\n"
     "  Loads every *.xml scene directly inside FOLDER (as Mitsuba's documentation script does:\n"
     "  -D spp=N where a scene uses $spp) and renders it at N samples per pixel (default 1).\n"
     "  Prints one line a scene: rendered, planned (a plugin an open issue adds, named),\n"
     "  out-of-scope (a plugin outside twinray's scope, named) or FAILED (the error), then the\n"
     "  counts. Exit status 1 when any scene FAILED.\n"
+    "  -a PATH         add a search path for the files the scenes name\n"
     "  --previews DIR  write DIR/<scene>.png (sRGB) for every rendered scene\n";
 
 struct ConformanceArgs {
@@ -34,6 +35,8 @@ ConformanceArgs parse(int argc, char** argv) {
     std::string arg = args.next();
     if (arg == "--spp") {
       a.options.spp = args.uint_value(arg, 1);
+    } else if (arg == "-a") {
+      a.options.search_paths.push_back(args.value(arg));
     } else if (arg == "--backend") {
       a.options.backend = args.value(arg);
       if (a.options.backend != "cpu" && a.options.backend != "gpu")

@@ -31,6 +31,7 @@ ConformanceResult check_conformance(const std::string& scene_path,
     LoadOptions load;
     load.defines["spp"] = std::to_string(options.spp);
     load.unused_defines_allowed = true;
+    load.search_paths = options.search_paths;
     Scene scene = load_scene(scene_path, load);
     SceneRender render =
         render_scene(options.backend, scene, options.spp, scene.seed, options.threads);

@@ -12,7 +12,8 @@ namespace tr {
 enum class ConformanceOutcome { Rendered, Planned, OutOfScope, Failed };
 
 struct ConformanceOptions {
-  std::uint32_t spp = 1;  // also given as -D spp=... where the scene asks for $spp
+  std::uint32_t spp = 1;                  // also given as -D spp=... where the scene asks for $spp
+  std::vector<std::string> search_paths;  // -a
   std::string backend = "cpu";
   std::uint32_t threads = 0;  // 0: all cores
   std::string preview_dir;    // where to write <scene>.png previews; empty: none
