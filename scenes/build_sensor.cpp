@@ -173,7 +173,8 @@ void SceneBuilder::add_sensor(Node& s) {
          " film");
   std::string file_format = to_lower(take_string(film, "file_format", "openexr"));
   if (file_format != "openexr" && file_format != "exr")
-    fail(find_property(film, "file_format")->loc, describe(film), ": file_format must be openexr");
+    fail(find_property(film, "file_format")->loc, describe(film), ": file_format \"", file_format,
+         "\" is not supported (twinray writes OpenEXR only)");
   std::string pixel_format = to_lower(take_string(film, "pixel_format", "rgb"));
   if (pixel_format != "rgb")
     fail(find_property(film, "pixel_format")->loc, describe(film), ": pixel_format \"",
@@ -223,15 +224,13 @@ void SceneBuilder::add_sensor(Node& s) {
   scene_.seed = uint(seed);
   check_consumed(sampler);
 
-  // ---- Sensor (src/render/sensor.cpp): shutter_open/close both default to 0.
+  // ---- Sensor (src/render/sensor.cpp): shutter_open/close both default to 0. Nothing in a
+  // Mitsuba 3 scene moves over time, so an open shutter interval changes no pixel.
   double shutter_open = take_float(s, "shutter_open", 0.0);
   double shutter_close = take_float(s, "shutter_close", 0.0);
   if (shutter_close < shutter_open)
     fail(location_of(s, "shutter_close"), describe(s),
          ": shutter_close must not be earlier than shutter_open");
-  if (shutter_close > shutter_open)
-    fail(location_of(s, "shutter_close"), describe(s),
-         ": motion blur (shutter_open < shutter_close) is not supported");
 
   // ---- ProjectiveCamera (src/render/sensor.cpp): clip planes and focus_distance, read by
   // every projective camera (perspective accepts it and, like Mitsuba, ignores it).
