@@ -39,6 +39,20 @@ inline std::string scene_xml(const std::string& body) {
          body + "\n</scene>\n";
 }
 
+// Loads `path`: true when it loads, false when it fails with a one-line SceneError that names
+// the file (any other outcome fails the test).
+inline bool loads_or_fails_cleanly(const std::string& path) {
+  try {
+    load_scene(path, {});
+    return true;
+  } catch (const SceneError& e) {
+    std::string m = e.what();
+    EXPECT_EQ(m.rfind(path + ":", 0), 0u) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    return false;
+  }
+}
+
 const char* const QUAD_OBJ =
     "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
     "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
