@@ -7,6 +7,7 @@
 
 #include "app/arguments.h"
 #include "app/exit_codes.h"
+#include "app/run_backend.h"
 #include "validation/harness/conformance.h"
 
 namespace tr {
@@ -30,6 +31,7 @@ struct ConformanceArgs {
 
 ConformanceArgs parse(int argc, char** argv) {
   ConformanceArgs a;
+  a.options.render = run_backend;
   Arguments args(argc, argv);
   while (args.more()) {
     std::string arg = args.next();

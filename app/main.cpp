@@ -9,9 +9,9 @@
 #ifdef TWINRAY_HAS_GPU
 #include "gpu_backend/render_gpu.h"
 #endif
-#include "validation/harness/converge_command.h"
-#include "validation/harness/validate_command.h"
-#include "validation/image/compare_command.h"
+#include "app/compare_command.h"
+#include "app/converge_command.h"
+#include "app/validate_command.h"
 
 namespace {
 

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "app/run_backend.h"
 #include "tampering.h"
 #include "validation/harness/mitsuba_acceptance.h"
 #include "validation/harness/scene_render.h"
@@ -51,7 +52,7 @@ CompareReport judge(const Case& c, const RgbImage& img, const std::string& what)
 }
 
 RgbImage render(const Scene& scene, std::uint32_t spp, std::uint32_t seed) {
-  return render_scene("cpu", scene, spp, seed).mean;
+  return render_scene(run_backend, "cpu", scene, spp, seed).mean;
 }
 
 TEST(HarnessCatches, NoisyUnbiasedRendersPassOverSeveralSeeds) {

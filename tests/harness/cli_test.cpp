@@ -152,7 +152,7 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
       run(cli() + " converge " + (scenes / "floating_sphere/test_directional_direct.xml").string() +
               " --reference " +
               (scenes / "floating_sphere/refs/test_directional_ref_rgb.exr").string() +
-              " --budget 0.3 --max-spp 64 --variant label=direct" +
+              " --budget 2 --max-spp 64 --variant label=direct" +
               " --variant integrator=path,max_depth=1,label=path-depth-1" +
               " --targets 0.05,1e-9 --out " + dir.string(),
           &out);

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "validation/harness/converge_command.h"
-#include "validation/harness/validate_command.h"
+#include "app/converge_command.h"
+#include "app/validate_command.h"
 
 int main(int argc, char** argv) {
   if (argc >= 2 && !std::strcmp(argv[1], "validate"))

@@ -1,5 +1,5 @@
 // `twinray compare`: exit status, JSON summary and heatmap.
-#include "validation/image/compare_command.h"
+#include "app/compare_command.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

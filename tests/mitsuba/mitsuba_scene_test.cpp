@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "app/run_backend.h"
 #include "validation/harness/mitsuba_acceptance.h"
 #include "validation/harness/scene_render.h"
 #include "validation/harness/suite.h"
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
     const tr::SuiteEntry& e = tr::find_entry(suite, argv[2]);
     tr::Scene scene = tr::load_entry_scene(e);
     std::uint32_t spp = tr::entry_spp(e, scene), seed = tr::entry_seed(e, scene);
-    tr::SceneRender r = tr::render_scene("cpu", scene, spp, seed);
+    tr::SceneRender r = tr::render_scene(tr::run_backend, "cpu", scene, spp, seed);
     tr::RgbImage ref = tr::read_rgb(e.reference), var = tr::read_rgb(e.variance);
     tr::AcceptanceResult a = tr::mitsuba_acceptance(r.mean, spp, ref, var, e.reference_spp);
     std::printf("%s: %s, cpu, %ux%u, %u spp, seed %u, %.2f s\n", e.name.c_str(), e.scene.c_str(),

@@ -33,8 +33,8 @@ ConformanceResult check_conformance(const std::string& scene_path,
     load.unused_defines_allowed = true;
     load.search_paths = options.search_paths;
     Scene scene = load_scene(scene_path, load);
-    SceneRender render =
-        render_scene(options.backend, scene, options.spp, scene.seed, options.threads);
+    SceneRender render = render_scene(options.render, options.backend, scene, options.spp,
+                                      scene.seed, options.threads);
     if (!options.preview_dir.empty())
       write_preview_png(
           (fs::path(options.preview_dir) / (fs::path(scene_path).stem().string() + ".png"))

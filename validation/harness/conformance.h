@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "validation/harness/scene_render.h"
+
 namespace tr {
 
 enum class ConformanceOutcome { Rendered, Planned, OutOfScope, Failed };
@@ -14,6 +16,7 @@ enum class ConformanceOutcome { Rendered, Planned, OutOfScope, Failed };
 struct ConformanceOptions {
   std::uint32_t spp = 1;                  // also given as -D spp=... where the scene asks for $spp
   std::vector<std::string> search_paths;  // -a
+  BackendRenderer render;                 // required
   std::string backend = "cpu";
   std::uint32_t threads = 0;  // 0: all cores
   std::string preview_dir;    // where to write <scene>.png previews; empty: none

@@ -1,6 +1,5 @@
 #include "validation/harness/scene_render.h"
 
-#include "app/run_backend.h"
 #include "io/image.h"
 #include "scenes/load_scene.h"
 
@@ -36,14 +35,15 @@ std::uint32_t entry_seed(const SuiteEntry& entry, const Scene& scene) {
   return entry.seed.value_or(scene.seed);
 }
 
-SceneRender render_scene(const std::string& backend, const Scene& scene, std::uint32_t spp,
-                         std::uint32_t seed, std::uint32_t threads) {
+SceneRender render_scene(const BackendRenderer& render, const std::string& backend,
+                         const Scene& scene, std::uint32_t spp, std::uint32_t seed,
+                         std::uint32_t threads) {
   RenderOptions options;
   options.spp = spp;
   options.seed = seed;
   options.threads = threads;
   SceneRender r;
-  r.result = run_backend(backend, scene, options);
+  r.result = render(backend, scene, options);
   r.mean = mean_image(r.result);
   r.variance = variance_image(r.result);
   return r;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "render/render.h"
@@ -24,9 +25,15 @@ std::uint32_t entry_spp(const SuiteEntry& entry, const Scene& scene);
 // The entry's seed, or the scene's sampler seed.
 std::uint32_t entry_seed(const SuiteEntry& entry, const Scene& scene);
 
-// run_backend with spp, seed and threads (0: all cores); throws BackendUnavailable.
-SceneRender render_scene(const std::string& backend, const Scene& scene, std::uint32_t spp,
-                         std::uint32_t seed, std::uint32_t threads = 0);
+// Renders a scene with the backend named "cpu" or "gpu"; throws BackendUnavailable when it
+// cannot. The command line supplies it (app/run_backend.h), so validation/ knows no backend.
+using BackendRenderer =
+    std::function<RenderResult(const std::string& backend, const Scene&, const RenderOptions&)>;
+
+// `render` with spp, seed and threads (0: all cores); throws BackendUnavailable.
+SceneRender render_scene(const BackendRenderer& render, const std::string& backend,
+                         const Scene& scene, std::uint32_t spp, std::uint32_t seed,
+                         std::uint32_t threads = 0);
 
 RgbImage mean_image(const RenderResult& r);
 RgbImage variance_image(const RenderResult& r);

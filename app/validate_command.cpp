@@ -1,4 +1,4 @@
-#include "validation/harness/validate_command.h"
+#include "app/validate_command.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +9,7 @@
 
 #include "app/arguments.h"
 #include "app/exit_codes.h"
+#include "app/run_backend.h"
 #include "io/heatmap.h"
 #include "io/temp_file.h"
 #include "render/write_result.h"
@@ -191,7 +192,7 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
     std::string ref_png = stem + "_reference.png";
     write_preview_png(ref_png, ref);
 
-    SceneRender cpu = render_scene("cpu", scene, o.spp, seed, a.threads);
+    SceneRender cpu = render_scene(run_backend, "cpu", scene, o.spp, seed, a.threads);
     std::map<std::string, std::string> meta = {{"twinray:scene", e.scene}};
     write_result(cpu.result, output_paths(stem + "_cpu.exr"), meta, scene.film_half);
     o.scene.images.push_back({"CPU render", stem + "_cpu.png"});
@@ -202,7 +203,7 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
 
     if (a.gpu != GpuMode::off) {
       try {
-        SceneRender gpu = render_scene("gpu", scene, o.spp, seed, a.threads);
+        SceneRender gpu = render_scene(run_backend, "gpu", scene, o.spp, seed, a.threads);
         write_result(gpu.result, output_paths(stem + "_gpu.exr"), meta, scene.film_half);
         o.scene.images.push_back({"GPU render", stem + "_gpu.png"});
         o.scene.facts.push_back(

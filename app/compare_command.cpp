@@ -1,4 +1,4 @@
-#include "validation/image/compare_command.h"
+#include "app/compare_command.h"
 
 #include <cstdio>
 #include <iostream>

@@ -1,4 +1,4 @@
-#include "validation/harness/converge_command.h"
+#include "app/converge_command.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,6 +10,7 @@
 
 #include "app/arguments.h"
 #include "app/exit_codes.h"
+#include "app/run_backend.h"
 #include "io/temp_file.h"
 #include "scenes/load_scene.h"
 #include "validation/harness/scene_render.h"
@@ -140,7 +141,8 @@ ConvergenceSeries converge_variant(const Scene& base, const RenderVariant& v,
   std::uint32_t seed = a.seed.value_or(base.seed);
   for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2, ++seed) {
     if (!series.points.empty() && spent + 2.0 * last > a.budget) break;
-    SceneRender r = render_scene(v.backend, scene, std::uint32_t(spp), seed, a.threads);
+    SceneRender r =
+        render_scene(run_backend, v.backend, scene, std::uint32_t(spp), seed, a.threads);
     check_same_size(r.mean, "render", reference, a.reference);
     ErrorMetrics m = error_metrics(r.mean, reference);
     ConvergencePoint p;
