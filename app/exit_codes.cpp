@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "io/temp_file.h"
+#include "render/checkpoint.h"
 #include "render/render.h"
 #include "scenes/scene.h"
 
@@ -18,6 +19,9 @@ int report_failure(const char* prefix) {
   } catch (const BackendUnavailable& e) {
     std::fprintf(stderr, "%s: %s\n", prefix, e.what());
     return kExitNoBackend;
+  } catch (const CheckpointError& e) {
+    std::fprintf(stderr, "%s: %s\n", prefix, e.what());
+    return kExitCheckpoint;
   } catch (const FileError& e) {
     std::fprintf(stderr, "%s: %s\n", prefix, e.what());
     return kExitOutput;

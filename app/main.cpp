@@ -24,7 +24,8 @@ const char* kUsage =
     "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
     "  conformance FOLDER [opts]    load and render every scene of a folder, sort the outcomes\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
-    "             5 output not writable, 6 internal error\n";
+    "             5 output not writable, 6 internal error, 7 render interrupted (outputs hold\n"
+    "             the samples so far), 8 checkpoint damaged or of another render\n";
 
 }  // namespace
 

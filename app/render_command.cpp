@@ -2,8 +2,11 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,10 +14,14 @@
 #include "app/arguments.h"
 #include "app/exit_codes.h"
 #include "app/progress_bar.h"
+#include "app/render_passes.h"
 #include "app/run_backend.h"
+#include "app/stop_signals.h"
 #include "io/image.h"
+#include "render/checkpoint.h"
 #include "render/write_result.h"
 #include "scenes/load_scene.h"
+#include "scenes/scene_digest.h"
 
 namespace tr {
 namespace {
@@ -32,7 +39,16 @@ const char* kUsage =
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
     "  --backend B     cpu (the reference, default) or gpu (Vulkan ray tracing)\n"
-    "  --device D      GPU device index or name substring (see `twinray devices`)\n";
+    "  --device D      GPU device index or name substring (see `twinray devices`)\n"
+    "  Budgets (the render stops at the first one reached; --spp stays the cap):\n"
+    "  --time SECONDS          stop after this much rendering time\n"
+    "  --target-error E        stop when the estimated relative error (the root of the\n"
+    "                          expected relMSE, render/film_error.h) is at most E\n"
+    "  --checkpoint SECONDS    every SECONDS, and at the end, write OUT.checkpoint atomically\n"
+    "  --resume FILE           continue the render a checkpoint holds (same scene, defines,\n"
+    "                          seed, backend and twinray build; refused otherwise)\n"
+    "  SIGINT/SIGTERM finish the pass in flight, write the outputs (and the checkpoint) with\n"
+    "  the samples rendered so far and exit with status 7.\n";
 
 struct RenderArgs {
   std::string scene;
@@ -41,7 +57,18 @@ struct RenderArgs {
   RenderOptions render;
   std::optional<std::uint32_t> seed;  // unset: the scene's sampler `seed`
   std::string backend = "cpu";
+  RenderBudget budget;
+  double checkpoint_seconds = 0.0;  // 0: no checkpoints
+  std::string resume;
 };
+
+double positive_seconds(const std::string& option, const std::string& value) {
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !(v > 0.0) || !std::isfinite(v))
+    throw UsageError(option + " expects a positive number, got '" + value + "'");
+  return v;
+}
 
 RenderArgs parse(int argc, char** argv) {
   RenderArgs a;
@@ -67,6 +94,14 @@ RenderArgs parse(int argc, char** argv) {
         throw UsageError("--backend must be cpu or gpu, got '" + a.backend + "'");
     } else if (arg == "--device") {
       a.render.device = args.value(arg);
+    } else if (arg == "--time") {
+      a.budget.seconds = positive_seconds(arg, args.value(arg));
+    } else if (arg == "--target-error") {
+      a.budget.error = positive_seconds(arg, args.value(arg));
+    } else if (arg == "--checkpoint") {
+      a.checkpoint_seconds = positive_seconds(arg, args.value(arg));
+    } else if (arg == "--resume") {
+      a.resume = args.value(arg);
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option '" + arg + "'");
     } else if (a.scene.empty()) {
@@ -89,7 +124,7 @@ void check_output_directory(const std::string& path) {
     throw ImageError(path + ": output directory " + dir.string() + " is not writable");
 }
 
-void print_summary(const RenderResult& r, const OutputPaths& paths) {
+void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOutcome& outcome) {
   const RenderStats& s = r.stats;
   double sps = s.seconds > 0 ? double(s.samples) / s.seconds : 0.0;
   double rps = s.seconds > 0 ? double(s.rays) / s.seconds : 0.0;
@@ -98,6 +133,8 @@ void print_summary(const RenderResult& r, const OutputPaths& paths) {
       "rejected\n",
       r.width, r.height, r.spp, s.seconds, sps * 1e-6, rps * 1e-6,
       static_cast<unsigned long long>(s.rejected_nonfinite));
+  std::printf("twinray: stopped: %s; estimated relative error %.4g\n",
+              stop_reason_name(outcome.stop), outcome.error);
   std::printf("twinray: backend %s (%s); wrote %s, %s, %s\n", r.backend.c_str(), r.device.c_str(),
               paths.image.c_str(), paths.variance.c_str(), paths.preview.c_str());
 }
@@ -123,19 +160,37 @@ int render_command(int argc, char** argv) {
     check_output_directory(paths.image);
     Scene scene = load_scene(a.scene, a.load);
     a.render.seed = a.seed.value_or(scene.seed);
+    const Camera& camera = scene.buffers.globals.camera;
+    a.budget.spp = a.render.spp ? a.render.spp : scene.spp;
+    std::unique_ptr<Renderer> renderer = make_renderer(a.backend, scene, a.render);
+    const RenderIdentity id{build_id(),    scene_digest(scene),     a.backend,
+                            a.render.seed, renderer->granularity(), camera.width,
+                            camera.height};
+    FilmState film =
+        a.resume.empty() ? empty_film(camera.width, camera.height) : read_checkpoint(a.resume, id);
+    if (film.samples > a.budget.spp)
+      throw CheckpointError(a.resume + ": holds " + std::to_string(film.samples) +
+                            " spp, more than the " + std::to_string(a.budget.spp) + " asked for");
+    const std::string checkpoint =
+        paths.image.substr(0, paths.image.size() - std::string(".exr").size()) + ".checkpoint";
     ProgressBar bar;
-    a.render.progress = [&bar](std::uint64_t done, std::uint64_t total) {
-      bar.update(done, total);
-    };
-    RenderResult result = run_backend(a.backend, scene, a.render);
+    StopSignals signals;
+    PassOutcome outcome = render_passes(
+        *renderer, film, a.budget, a.checkpoint_seconds,
+        [&](const FilmState& f) { write_checkpoint(checkpoint, id, f); },
+        [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); },
+        [&signals] { return signals.raised(); });
     bar.finish();
+    RenderResult result = film_result(film, *renderer);
     write_result(result, paths,
                  {{"twinray:scene", a.scene},
                   {"twinray:integrator", scene.integrator_name},
-                  {"twinray:version", TWINRAY_VERSION}},
+                  {"twinray:version", TWINRAY_VERSION},
+                  {"twinray:stopped", stop_reason_name(outcome.stop)},
+                  {"twinray:estimated_error", std::to_string(outcome.error)}},
                  scene.film_half);
-    print_summary(result, paths);
-    return kExitOk;
+    print_summary(result, paths, outcome);
+    return outcome.stop == StopReason::Interrupted ? kExitInterrupted : kExitOk;
   } catch (...) {
     return report_failure("twinray");
   }

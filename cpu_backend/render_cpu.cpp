@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <mutex>
 #include <string>
 
@@ -27,11 +28,11 @@ struct ThreadCounts {
   std::uint64_t rejected = 0;
 };
 
-// All samples of one pixel, in order, accumulated in double (render/film_moments.h).
-FilmMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint seed,
-                         ThreadCounts& counts) {
-  FilmMoments m;
-  for (uint i = 0; i < spp; ++i) {
+// Samples [first, first + count) of one pixel, in order, added to its moments in double
+// (render/film_moments.h).
+void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count, uint seed,
+                  FilmMoments& m, ThreadCounts& counts) {
+  for (uint i = first; i < first + count; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
     while (integrator_alive(s)) {
       Hit hit = accel.intersect(s.ray);
@@ -49,66 +50,85 @@ FilmMoments render_pixel(const EmbreeScene& accel, uvec2 pixel, uint spp, uint s
     }
     add_sample(integrator_negative(s) ? m.negative : m.positive, L);
   }
-  return m;
 }
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+class CpuRenderer final : public Renderer {
+ public:
+  CpuRenderer(const Scene& scene, const RenderOptions& options)
+      : threads_(options.threads ? int(options.threads) : tbb::info::default_concurrency()),
+        limit_(tbb::global_control::max_allowed_parallelism, size_t(threads_)),
+        seed_(options.seed),
+        binding_(scene.buffers) {
+    auto start = std::chrono::steady_clock::now();
+    accel_ = std::make_unique<EmbreeScene>(scene.buffers);
+    build_seconds_ = seconds_since(start);
+  }
+
+  void render(uint count, FilmState& film, const ProgressFn& progress) override {
+    auto start = std::chrono::steady_clock::now();
+    const uint first = film.samples;
+    const std::uint64_t total = std::uint64_t(film.width) * film.height * count;
+    std::atomic<std::uint64_t> done{0};
+    std::mutex progress_mutex;
+    tbb::combinable<ThreadCounts> counts;
+    tbb::parallel_for(
+        tbb::blocked_range2d<uint>(0, film.height, kTileSize, 0, film.width, kTileSize),
+        [&](const tbb::blocked_range2d<uint>& tile) {
+          ThreadCounts& local = counts.local();
+          for (uint y = tile.rows().begin(); y != tile.rows().end(); ++y)
+            for (uint x = tile.cols().begin(); x != tile.cols().end(); ++x)
+              render_pixel(*accel_, uvec2(x, y), first, count, seed_,
+                           film.pixels[size_t(y) * film.width + x], local);
+          std::uint64_t now = done +=
+              std::uint64_t(tile.rows().size()) * tile.cols().size() * count;
+          if (progress) {
+            std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
+            if (lock.owns_lock()) progress(now, total);
+          }
+        });
+    counts.combine_each([&](const ThreadCounts& c) {
+      film.stats.rays += c.rays;
+      film.stats.rejected_nonfinite += c.rejected;
+    });
+    film.samples += count;
+    film.stats.samples += total;
+    film.stats.seconds += seconds_since(start) + build_seconds_;
+    build_seconds_ = 0.0;
+    if (progress) progress(total, total);
+  }
+
+  uint granularity() const override { return 1; }
+  std::string backend() const override { return "cpu"; }
+  std::string device() const override {
+    return "Embree " + std::string(RTC_VERSION_STRING) + ", " + std::to_string(threads_) +
+           (threads_ == 1 ? " thread" : " threads");
+  }
+  uint seed() const override { return seed_; }
+
+ private:
+  int threads_;
+  tbb::global_control limit_;
+  uint seed_;
+  ScopedSceneBinding binding_;
+  std::unique_ptr<EmbreeScene> accel_;
+  double build_seconds_ = 0.0;
+};
 
 }  // namespace
 
+std::unique_ptr<Renderer> make_cpu_renderer(const Scene& scene, const RenderOptions& options) {
+  return std::make_unique<CpuRenderer>(scene, options);
+}
+
 RenderResult render_cpu(const Scene& scene, const RenderOptions& options) {
-  const SceneBuffers& buffers = scene.buffers;
-  const Camera& camera = buffers.globals.camera;
-  RenderResult result;
-  result.width = camera.width;
-  result.height = camera.height;
-  result.spp = options.spp ? options.spp : scene.spp;
-  result.seed = options.seed;
-  result.backend = "cpu";
-  result.mean.assign(size_t(result.width) * result.height * 3, 0.0);
-  result.variance.assign(result.mean.size(), 0.0);
-
-  int threads = options.threads ? int(options.threads) : tbb::info::default_concurrency();
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-  result.device = "Embree " + std::string(RTC_VERSION_STRING) + ", " + std::to_string(threads) +
-                  (threads == 1 ? " thread" : " threads");
-
-  auto start = std::chrono::steady_clock::now();
-  ScopedSceneBinding binding(buffers);
-  EmbreeScene accel(buffers);
-
-  const std::uint64_t total = std::uint64_t(result.width) * result.height * result.spp;
-  std::atomic<std::uint64_t> done{0};
-  std::mutex progress_mutex;
-  tbb::combinable<ThreadCounts> counts;
-  const uint spp = result.spp;
-  const uint seed = result.seed;
-
-  tbb::parallel_for(
-      tbb::blocked_range2d<uint>(0, result.height, kTileSize, 0, result.width, kTileSize),
-      [&](const tbb::blocked_range2d<uint>& tile) {
-        ThreadCounts& local = counts.local();
-        for (uint y = tile.rows().begin(); y != tile.rows().end(); ++y) {
-          for (uint x = tile.cols().begin(); x != tile.cols().end(); ++x) {
-            FilmMoments m = render_pixel(accel, uvec2(x, y), spp, seed, local);
-            size_t base = (size_t(y) * result.width + x) * 3;
-            develop(m, &result.mean[base], &result.variance[base]);
-          }
-        }
-        std::uint64_t now = done += std::uint64_t(tile.rows().size()) * tile.cols().size() * spp;
-        if (options.progress) {
-          std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
-          if (lock.owns_lock()) options.progress(now, total);
-        }
-      });
-
-  counts.combine_each([&](const ThreadCounts& c) {
-    result.stats.rays += c.rays;
-    result.stats.rejected_nonfinite += c.rejected;
-  });
-  result.stats.samples = total;
-  result.stats.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (options.progress) options.progress(total, total);
-  return result;
+  const Camera& camera = scene.buffers.globals.camera;
+  std::unique_ptr<Renderer> renderer = make_cpu_renderer(scene, options);
+  return render_all(*renderer, camera.width, camera.height, options.spp ? options.spp : scene.spp,
+                    options.progress);
 }
 
 }  // namespace tr

@@ -38,7 +38,159 @@ uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
       std::clamp(std::floor(samples_per_dispatch / double(pixels)), 1.0, 256.0));
 }
 
+// The Vulkan device, pipeline, scene and buffers of one render, kept across passes.
+class GpuRenderer final : public Renderer {
+ public:
+  GpuRenderer(const Scene& scene, const RenderOptions& options, const uint32_t* raygen,
+              size_t raygen_bytes, const GpuTuning& tuning)
+      : width_(scene.buffers.globals.camera.width),
+        height_(scene.buffers.globals.camera.height),
+        pixels_(static_cast<size_t>(width_) * height_),
+        seed_(options.seed) {
+    if (width_ == 0 || height_ == 0) throw GpuError("the scene's film has no pixels");
+    Clock::time_point phase = Clock::now();
+    instance_ = std::make_unique<VulkanInstance>();
+    const std::vector<DeviceInfo> devices = query_devices(instance_->handle());
+    device_info_ = select_device(devices, options.device);
+    device_ = std::make_unique<VulkanDevice>(*instance_, device_info_);
+    timings_.setup_seconds = seconds_since(phase);
+    phase = Clock::now();
+    pipeline_ = std::make_unique<RayTracingPipeline>(
+        *device_, raygen, raygen_bytes,
+        tuning.specialize ? scene_features(scene.buffers) : all_features());
+    timings_.pipeline_seconds = seconds_since(phase);
+    phase = Clock::now();
+    batch_bytes_ = pixels_ * sizeof(PixelBatch);
+    batches_ = Buffer(*device_, batch_bytes_,
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    for (Slot& slot : slots_) {
+      slot.commands = std::make_unique<AsyncCommands>(*device_);
+      slot.readback =
+          Buffer(*device_, batch_bytes_, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    }
+    scene_ = std::make_unique<GpuScene>(*device_, scene.buffers, pipeline_->set_layout(), batches_);
+    timings_.build_seconds = seconds_since(phase);
+    pending_build_seconds_ = timings_.build_seconds;
+    batch_size_ = batch_spp(device_info_, pixels_);
+  }
+
+  // Batches cover [k B, (k + 1) B) of the sample indices (B = granularity()), cut short only
+  // at the end of the range: a pass on those boundaries dispatches what one render would.
+  void render(uint32_t count, FilmState& film, const ProgressFn& progress) override {
+    Clock::time_point phase = Clock::now();
+    const uint32_t first = film.samples, end = film.samples + count;
+    uint32_t submitted = first, merged = first;
+    unsigned next = 0, in_flight = 0;
+    while (merged < end) {
+      // The first dispatch runs alone: lavapipe compiles the shaders in it.
+      const unsigned max_in_flight = dispatches_ == 0 ? 1 : 2;
+      while (submitted < end && in_flight < max_in_flight) {
+        const uint32_t boundary = (submitted / batch_size_ + 1) * batch_size_;
+        const uint32_t n = std::min(boundary, end) - submitted;
+        submit(slots_[(next + in_flight) % 2], submitted, n);
+        submitted += n;
+        ++in_flight;
+      }
+      Slot& slot = slots_[next];
+      slot.commands->wait();
+      if (dispatches_ == 0) {
+        timings_.first_dispatch_seconds = seconds_since(slot.submitted);
+        timings_.first_dispatch_spp = slot.sample_count;
+      }
+      const PixelBatch* batch = static_cast<const PixelBatch*>(slot.readback.mapped());
+      merge_batches(batch, slot.sample_count, film.pixels);
+      for (size_t p = 0; p < pixels_; ++p) {
+        film.stats.rays += batch[p].rays;
+        film.stats.rejected_nonfinite += batch[p].rejected;
+      }
+      merged += slot.sample_count;
+      next = (next + 1) % 2;
+      --in_flight;
+      ++dispatches_;
+      if (progress)
+        progress(static_cast<uint64_t>(merged - first) * pixels_,
+                 static_cast<uint64_t>(count) * pixels_);
+    }
+    film.samples = end;
+    film.stats.samples += static_cast<uint64_t>(count) * pixels_;
+    const double seconds = seconds_since(phase);
+    timings_.render_seconds += seconds;
+    film.stats.seconds += seconds + pending_build_seconds_;
+    pending_build_seconds_ = 0.0;
+  }
+
+  uint32_t granularity() const override { return batch_size_; }
+  std::string backend() const override { return "gpu"; }
+  std::string device() const override { return device_->name(); }
+  uint32_t seed() const override { return seed_; }
+  const GpuTimings& timings() const { return timings_; }
+
+ private:
+  struct Slot {
+    std::unique_ptr<AsyncCommands> commands;
+    Buffer readback;
+    uint32_t sample_count = 0;
+    Clock::time_point submitted;
+  };
+
+  void submit(Slot& slot, uint32_t first_sample, uint32_t count) {
+    BatchParams params{};
+    params.first_sample = first_sample;
+    params.sample_count = count;
+    params.seed = seed_;
+    slot.sample_count = count;
+    slot.submitted = Clock::now();
+    slot.commands->submit([&](VkCommandBuffer cmd) {
+      // The previous batch's copy must have read `batches_` before this trace overwrites it.
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0, nullptr, 0, nullptr,
+                           0, nullptr);
+      VkDescriptorSet set = scene_->descriptor_set();
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_->layout(), 0,
+                              1, &set, 0, nullptr);
+      vkCmdPushConstants(cmd, pipeline_->layout(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, 0,
+                         sizeof(BatchParams), &params);
+      pipeline_->trace(cmd, width_, height_);
+      VkMemoryBarrier barrier{};
+      barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+      barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+      barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+      VkBufferCopy region{0, 0, batch_bytes_};
+      vkCmdCopyBuffer(cmd, batches_.handle(), slot.readback.handle(), 1, &region);
+      barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+      barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                           &barrier, 0, nullptr, 0, nullptr);
+    });
+  }
+
+  uint32_t width_, height_;
+  size_t pixels_;
+  uint32_t seed_;
+  DeviceInfo device_info_;
+  std::unique_ptr<VulkanInstance> instance_;
+  std::unique_ptr<VulkanDevice> device_;
+  std::unique_ptr<RayTracingPipeline> pipeline_;
+  VkDeviceSize batch_bytes_ = 0;
+  Buffer batches_;
+  Slot slots_[2];
+  std::unique_ptr<GpuScene> scene_;
+  uint32_t batch_size_ = 1;
+  uint64_t dispatches_ = 0;
+  double pending_build_seconds_ = 0.0;
+  GpuTimings timings_;
+};
+
 }  // namespace
+
+std::unique_ptr<Renderer> make_gpu_renderer(const Scene& scene, const RenderOptions& options) {
+  return std::make_unique<GpuRenderer>(scene, options, spirv_raygen, sizeof(spirv_raygen),
+                                       GpuTuning());
+}
 
 RenderResult render_gpu(const Scene& scene, const RenderOptions& options) {
   return render_with_raygen(scene, options, spirv_raygen, sizeof(spirv_raygen));
@@ -47,128 +199,11 @@ RenderResult render_gpu(const Scene& scene, const RenderOptions& options) {
 RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options,
                                 const uint32_t* raygen, size_t raygen_bytes,
                                 const GpuTuning& tuning, GpuTimings* timings) {
-  GpuTimings timing;
-  Clock::time_point phase = Clock::now();
+  GpuRenderer renderer(scene, options, raygen, raygen_bytes, tuning);
   const Camera& camera = scene.buffers.globals.camera;
-  const uint32_t width = camera.width;
-  const uint32_t height = camera.height;
-  if (width == 0 || height == 0) throw GpuError("the scene's film has no pixels");
-  const uint32_t spp = options.spp != 0 ? options.spp : scene.spp;
-  const size_t pixels = static_cast<size_t>(width) * height;
-
-  VulkanInstance instance;
-  const std::vector<DeviceInfo> devices = query_devices(instance.handle());
-  const DeviceInfo& device_info = select_device(devices, options.device);
-  VulkanDevice device(instance, device_info);
-  timing.setup_seconds = seconds_since(phase);
-  phase = Clock::now();
-  RayTracingPipeline pipeline(device, raygen, raygen_bytes,
-                              tuning.specialize ? scene_features(scene.buffers) : all_features());
-  timing.pipeline_seconds = seconds_since(phase);
-  phase = Clock::now();
-
-  // Two dispatches in flight: while the device renders batch k + 1 the host merges batch k,
-  // which the device copied from `batches` into the readback buffer of k's slot.
-  const VkDeviceSize batch_bytes = pixels * sizeof(PixelBatch);
-  Buffer batches(device, batch_bytes,
-                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  struct Slot {
-    std::unique_ptr<AsyncCommands> commands;
-    Buffer readback;
-    uint32_t sample_count = 0;
-    Clock::time_point submitted;
-  };
-  Slot slots[2];
-  for (Slot& slot : slots) {
-    slot.commands = std::make_unique<AsyncCommands>(device);
-    slot.readback =
-        Buffer(device, batch_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-               VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  }
-  GpuScene gpu_scene(device, scene.buffers, pipeline.set_layout(), batches);
-  timing.build_seconds = seconds_since(phase);
-  phase = Clock::now();
-
-  RenderResult result;
-  result.width = width;
-  result.height = height;
-  result.spp = spp;
-  result.seed = options.seed;
-  result.backend = "gpu";
-  result.device = device.name();
-
-  auto submit = [&](Slot& slot, uint32_t first_sample, uint32_t count) {
-    BatchParams params{};
-    params.first_sample = first_sample;
-    params.sample_count = count;
-    params.seed = options.seed;
-    slot.sample_count = count;
-    slot.submitted = Clock::now();
-    slot.commands->submit([&](VkCommandBuffer cmd) {
-      // The previous batch's copy must have read `batches` before this trace overwrites it.
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                           VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0, nullptr, 0, nullptr,
-                           0, nullptr);
-      VkDescriptorSet set = gpu_scene.descriptor_set();
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout(), 0, 1,
-                              &set, 0, nullptr);
-      vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, 0,
-                         sizeof(BatchParams), &params);
-      pipeline.trace(cmd, width, height);
-      VkMemoryBarrier barrier{};
-      barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-      barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-      barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
-      VkBufferCopy region{0, 0, batch_bytes};
-      vkCmdCopyBuffer(cmd, batches.handle(), slot.readback.handle(), 1, &region);
-      barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-      barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                           &barrier, 0, nullptr, 0, nullptr);
-    });
-  };
-
-  MomentAccumulator moments(pixels);
-  const uint32_t batch_size = batch_spp(device_info, pixels);
-  uint32_t submitted = 0, merged = 0;
-  unsigned next = 0, in_flight = 0, completed = 0;
-  while (merged < spp) {
-    // The first dispatch runs alone: lavapipe compiles the shaders in it.
-    const unsigned max_in_flight = completed == 0 ? 1 : 2;
-    while (submitted < spp && in_flight < max_in_flight) {
-      const uint32_t count = std::min(batch_size, spp - submitted);
-      submit(slots[(next + in_flight) % 2], submitted, count);
-      submitted += count;
-      ++in_flight;
-    }
-    Slot& slot = slots[next];
-    slot.commands->wait();
-    if (completed == 0) {
-      timing.first_dispatch_seconds = seconds_since(slot.submitted);
-      timing.first_dispatch_spp = slot.sample_count;
-    }
-    const PixelBatch* batch = static_cast<const PixelBatch*>(slot.readback.mapped());
-    moments.merge(batch, slot.sample_count);
-    for (size_t p = 0; p < pixels; ++p) {
-      result.stats.rays += batch[p].rays;
-      result.stats.rejected_nonfinite += batch[p].rejected;
-    }
-    merged += slot.sample_count;
-    next = (next + 1) % 2;
-    --in_flight;
-    ++completed;
-    if (options.progress)
-      options.progress(static_cast<uint64_t>(merged) * pixels, static_cast<uint64_t>(spp) * pixels);
-  }
-
-  moments.develop(result.mean, result.variance);
-  result.stats.samples = static_cast<uint64_t>(spp) * pixels;
-  timing.render_seconds = seconds_since(phase);
-  result.stats.seconds = timing.build_seconds + timing.render_seconds;
-  if (timings) *timings = timing;
+  RenderResult result = render_all(renderer, camera.width, camera.height,
+                                   options.spp != 0 ? options.spp : scene.spp, options.progress);
+  if (timings) *timings = renderer.timings();
   return result;
 }
 

@@ -3,8 +3,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "render/render.h"
+#include "render/renderer.h"
 #include "scenes/scene.h"
 
 namespace tr {
@@ -16,6 +18,9 @@ namespace tr {
 // --backend cpu, and when the Vulkan validation layer (TWINRAY_VK_VALIDATION=1) reports an
 // error.
 RenderResult render_gpu(const Scene& scene, const RenderOptions& options);
+
+// The same backend for progressive rendering (render/renderer.h); throws as render_gpu.
+std::unique_ptr<Renderer> make_gpu_renderer(const Scene& scene, const RenderOptions& options);
 
 // Knobs and timings of the GPU backend beyond RenderOptions, for tests and measurements.
 struct GpuTuning {

@@ -14,6 +14,9 @@
 
 namespace tr {
 
+// Merges one batch of n_b samples per pixel into `pixels` (one FilmMoments per pixel).
+void merge_batches(const PixelBatch* batch, std::uint32_t n_b, std::vector<FilmMoments>& pixels);
+
 class MomentAccumulator {
  public:
   explicit MomentAccumulator(std::size_t pixels);

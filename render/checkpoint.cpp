@@ -1,0 +1,123 @@
+#include "render/checkpoint.h"
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "io/fnv1a.h"
+#include "io/temp_file.h"
+
+namespace tr {
+namespace {
+
+constexpr const char* kMagic = "twinray checkpoint 1";
+
+void write_group(std::ostream& out, const SampleGroup& g) {
+  out.write(reinterpret_cast<const char*>(&g.n), sizeof g.n);
+  out.write(reinterpret_cast<const char*>(g.mean), sizeof g.mean);
+  out.write(reinterpret_cast<const char*>(g.m2), sizeof g.m2);
+}
+
+void read_group(std::istream& in, SampleGroup& g) {
+  in.read(reinterpret_cast<char*>(&g.n), sizeof g.n);
+  in.read(reinterpret_cast<char*>(g.mean), sizeof g.mean);
+  in.read(reinterpret_cast<char*>(g.m2), sizeof g.m2);
+}
+
+std::string header(const RenderIdentity& id, std::uint32_t samples) {
+  std::ostringstream h;
+  h << kMagic << "\n"
+    << "build " << id.build << "\n"
+    << "scene " << id.scene << "\n"
+    << "backend " << id.backend << "\n"
+    << "seed " << id.seed << "\n"
+    << "granularity " << id.granularity << "\n"
+    << "width " << id.width << "\n"
+    << "height " << id.height << "\n"
+    << "samples " << samples << "\n"
+    << "end\n";
+  return h.str();
+}
+
+}  // namespace
+
+std::string build_id() {
+  std::ifstream exe("/proc/self/exe", std::ios::binary);
+  if (!exe) throw CheckpointError("/proc/self/exe: cannot read this executable to identify it");
+  Fnv1a f;
+  char buffer[1 << 16];
+  while (exe.read(buffer, sizeof buffer) || exe.gcount() > 0)
+    f.add(buffer, static_cast<size_t>(exe.gcount()));
+  return f.hex();
+}
+
+void write_checkpoint(const std::string& path, const RenderIdentity& id, const FilmState& film) {
+  TempFile tmp(path);
+  {
+    std::ofstream out(tmp.name(), std::ios::binary | std::ios::trunc);
+    out << header(id, film.samples);
+    for (const FilmMoments& m : film.pixels) {
+      write_group(out, m.positive);
+      write_group(out, m.negative);
+    }
+    const RenderStats& s = film.stats;
+    out.write(reinterpret_cast<const char*>(&s.seconds), sizeof s.seconds);
+    out.write(reinterpret_cast<const char*>(&s.samples), sizeof s.samples);
+    out.write(reinterpret_cast<const char*>(&s.rays), sizeof s.rays);
+    out.write(reinterpret_cast<const char*>(&s.rejected_nonfinite), sizeof s.rejected_nonfinite);
+    out.flush();
+    if (!out) throw FileError(path + ": could not write the checkpoint");
+  }
+  tmp.commit();
+}
+
+FilmState read_checkpoint(const std::string& path, const RenderIdentity& expected) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CheckpointError(path + ": cannot open the checkpoint");
+  std::string line;
+  if (!std::getline(in, line) || line != kMagic)
+    throw CheckpointError(path + ": not a twinray checkpoint (first line is not '" +
+                          std::string(kMagic) + "')");
+  // The identity lines must read exactly as this render's header would.
+  std::istringstream want(header(expected, 0));
+  std::getline(want, line);
+  std::string want_line;
+  std::uint32_t samples = 0;
+  while (std::getline(want, want_line)) {
+    if (!std::getline(in, line))
+      throw CheckpointError(path + ": truncated header (expected '" + want_line + "')");
+    const std::string key = want_line.substr(0, want_line.find(' '));
+    if (key == "samples") {
+      unsigned long long n = 0;
+      char tail = 0;
+      if (std::sscanf(line.c_str(), "samples %llu%c", &n, &tail) != 1 || n == 0 ||
+          n > 0xffffffffull)
+        throw CheckpointError(path + ": bad sample count line '" + line + "'");
+      samples = static_cast<std::uint32_t>(n);
+    } else if (line != want_line) {
+      const std::string what = line.substr(0, line.find(' '));
+      if (what != key) throw CheckpointError(path + ": damaged header (expected '" + key + "')");
+      throw CheckpointError(path + ": a checkpoint of another render: its " + key + " is '" +
+                            line.substr(key.size() + 1) + "', this render's is '" +
+                            want_line.substr(key.size() + 1) + "'");
+    }
+  }
+  FilmState film = empty_film(expected.width, expected.height);
+  film.samples = samples;
+  for (FilmMoments& m : film.pixels) {
+    read_group(in, m.positive);
+    read_group(in, m.negative);
+  }
+  RenderStats& s = film.stats;
+  in.read(reinterpret_cast<char*>(&s.seconds), sizeof s.seconds);
+  in.read(reinterpret_cast<char*>(&s.samples), sizeof s.samples);
+  in.read(reinterpret_cast<char*>(&s.rays), sizeof s.rays);
+  in.read(reinterpret_cast<char*>(&s.rejected_nonfinite), sizeof s.rejected_nonfinite);
+  if (!in) throw CheckpointError(path + ": truncated (pixel data ends early)");
+  if (in.peek() != std::char_traits<char>::eof())
+    throw CheckpointError(path + ": damaged (data after the statistics)");
+  return film;
+}
+
+}  // namespace tr

@@ -1,0 +1,31 @@
+// The error a render in progress has reached, estimated from its own variance: the root of the
+// expected relMSE of Rousselle et al. 2011 (validation/image/metrics.h: mean over pixels and
+// channels of (a - b)^2 / (b^2 + 0.01)). For an unbiased render the expected squared error of
+// a value is its variance over the sample count, var / n, so with the render's own mean m for
+// the reference the estimate is sqrt(mean(var / (n (m^2 + 0.01)))). The 0.01 keeps dark pixels,
+// whose relative error is unbounded, from deciding alone: it is the metric `twinray converge`
+// reports, so `render --target-error E` stops where converge would measure about E^2.
+// Below kMinErrorSamples samples per pixel the variances are too noisy to stop on (at 1 they
+// are all 0), and the estimate is infinite.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "render/film_state.h"
+
+namespace tr {
+
+constexpr std::uint32_t kMinErrorSamples = 16;
+
+inline double estimated_relative_error(const FilmState& film) {
+  if (film.samples < kMinErrorSamples || film.pixels.empty()) return INFINITY;
+  std::vector<double> mean, variance;
+  develop_film(film, mean, variance);
+  double sum = 0.0;
+  for (size_t i = 0; i < mean.size(); ++i)
+    sum += variance[i] / (double(film.samples) * (mean[i] * mean[i] + 1e-2));
+  return std::sqrt(sum / double(mean.size()));
+}
+
+}  // namespace tr

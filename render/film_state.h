@@ -1,0 +1,41 @@
+// A render in progress: every pixel's accumulated samples and the statistics so far. Backends
+// add consecutive sample ranges to it (render.h, Renderer), so a render can stop, be written
+// and go on. The CPU adds each pixel's samples one at a time in index order (Welford), so any
+// split of [0, n) gives the same state bit for bit; the GPU merges batches whose boundaries are
+// fixed multiples of its batch size, so any split on those boundaries does.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/film_moments.h"
+#include "render/render.h"
+
+namespace tr {
+
+struct FilmState {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t samples = 0;  // samples per pixel accumulated: indices [0, samples)
+  std::vector<FilmMoments> pixels;
+  RenderStats stats;  // seconds: sampling time so far, plus the one acceleration build
+};
+
+inline FilmState empty_film(std::uint32_t width, std::uint32_t height) {
+  FilmState f;
+  f.width = width;
+  f.height = height;
+  f.pixels.resize(std::size_t(width) * height);
+  return f;
+}
+
+// Each pixel's value and per-sample variance (film_moments.h develop), RGB row-major.
+inline void develop_film(const FilmState& film, std::vector<double>& mean,
+                         std::vector<double>& variance) {
+  mean.assign(3 * film.pixels.size(), 0.0);
+  variance.assign(3 * film.pixels.size(), 0.0);
+  for (std::size_t p = 0; p < film.pixels.size(); ++p)
+    develop(film.pixels[p], &mean[3 * p], &variance[3 * p]);
+}
+
+}  // namespace tr

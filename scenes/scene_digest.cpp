@@ -1,0 +1,25 @@
+#include "scenes/scene_digest.h"
+
+#include "io/fnv1a.h"
+
+namespace tr {
+
+std::string scene_digest(const Scene& scene) {
+  const SceneBuffers& b = scene.buffers;
+  Fnv1a f;
+  f.add(&b.globals, sizeof b.globals);
+  f.add_vector(b.materials);
+  f.add_vector(b.textures);
+  f.add_vector(b.texels);
+  f.add_vector(b.emitters);
+  f.add_vector(b.alias);
+  f.add_vector(b.shapes);
+  f.add_vector(b.instances);
+  f.add_vector(b.positions);
+  f.add_vector(b.normals);
+  f.add_vector(b.uvs);
+  f.add_vector(b.indices);
+  return f.hex();
+}
+
+}  // namespace tr
