@@ -18,6 +18,7 @@
 #include "app/run_backend.h"
 #include "app/stop_signals.h"
 #include "io/image.h"
+#include "io/temp_file.h"
 #include "render/checkpoint.h"
 #include "render/write_result.h"
 #include "scenes/load_scene.h"
@@ -122,6 +123,7 @@ void check_output_directory(const std::string& path) {
     throw ImageError(path + ": output directory " + dir.string() + " does not exist");
   if (access(dir.c_str(), W_OK) != 0)
     throw ImageError(path + ": output directory " + dir.string() + " is not writable");
+  TempFile probe(path);  // what access() cannot tell (e.g. for root): whether files can be made
 }
 
 void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOutcome& outcome) {

@@ -3,6 +3,8 @@
 // direct, moment) -> Camera, Integrator and the Scene's spp/seed. Defaults as Mitsuba 3
 // (src/sensors, src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters,
 // src/samplers, src/integrators).
+#include <unistd.h>
+
 #include <cmath>
 
 #include "core/rfilter.h"
@@ -171,6 +173,14 @@ void SceneBuilder::add_sensor(Node& s) {
     fail(film.loc, describe(film), ": the crop window (offset ", crop_x, ", ", crop_y, ", size ",
          crop_w, " x ", crop_h, ") must be non-empty and inside the ", width, " x ", height,
          " film");
+  // A render keeps about 200 bytes per rendered pixel (its moments and the developed image, in
+  // double; render/film_state.h); refuse films this machine cannot hold rather than fail late.
+  const double film_bytes = 200.0 * double(crop_w) * double(crop_h);
+  const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (memory > 0.0 && film_bytes > memory)
+    fail(film.loc, describe(film), ": ", crop_w, " x ", crop_h, " pixels need about ",
+         std::ceil(film_bytes / 1073741824.0), " GiB of memory, more than this machine's ",
+         std::floor(memory / 1073741824.0), " GiB");
   std::string file_format = to_lower(take_string(film, "file_format", "openexr"));
   if (file_format != "openexr" && file_format != "exr")
     fail(find_property(film, "file_format")->loc, describe(film), ": file_format \"", file_format,

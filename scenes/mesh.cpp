@@ -6,8 +6,11 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <unordered_map>
+
+#include "scenes/ply_check.h"
 
 namespace tr {
 
@@ -53,6 +56,8 @@ void join_identical_vertices(TriangleMesh& mesh) {
 }  // namespace
 
 TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".ply" || ext == ".PLY") check_ply_file(path);
   Assimp::Importer importer;
   // No vertex joining (Assimp's merges within an absolute epsilon) and no normal generation
   // (the caller follows Mitsuba); corners are joined exactly below.

@@ -189,6 +189,7 @@ class Parser {
     check_attributes(root, src, {"version"});
     if (root.attribute("version").empty())
       fail(src.at(root), "<scene> is missing its 'version' attribute");
+    check_version(root.attribute("version").value(), src.at(root));
     if (is_main) parent.loc = src.at(root);
     for (pugi::xml_node child : root.children()) parse_element(child, parent, src, depth, false, 1);
   }
@@ -223,6 +224,30 @@ class Parser {
   std::string required_attr(const pugi::xml_node& x, const char* name, const Source& src) {
     if (!has_attr(x, name)) fail(src.at(x), "<", x.name(), "> requires the attribute '", name, "'");
     return attr(x, name, src);
+  }
+
+  // Mitsuba's util::Version: three period-separated numbers. Scenes before 2.0.0 are Mitsuba
+  // 0.x files, which Mitsuba 3 rewrites on load (renamed plugins and parameters); twinray
+  // reads the 2.0 format only and says so rather than misread them.
+  void check_version(const std::string& v, const Location& loc) {
+    int parts = 0;
+    bool digits = false, ok = true;
+    for (char c : v) {
+      if (std::isdigit(static_cast<unsigned char>(c))) {
+        digits = true;
+      } else if (c == '.' && digits) {
+        ++parts;
+        digits = false;
+      } else {
+        ok = false;
+      }
+    }
+    if (!ok || !digits || parts != 2)
+      fail(loc, "<scene version=\"", v, "\">: a version is three period-separated numbers");
+    if (std::stoul(v.substr(0, v.find('.'))) < 2)
+      fail(loc, "<scene version=\"", v,
+           "\">: a Mitsuba 0.x scene, which twinray does not read (Mitsuba 3 upgrades it on load; "
+           "save the upgraded scene with version 2.0.0 or later)");
   }
 
   void check_attributes(const pugi::xml_node& x, const Source& src,

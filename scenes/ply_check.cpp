@@ -1,0 +1,221 @@
+#include "scenes/ply_check.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace tr {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw std::runtime_error("PLY: " + what); }
+
+// Byte sizes of the scalar types, under both of the format's spellings.
+int type_size(const std::string& t) {
+  static const std::map<std::string, int> sizes = {
+      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+  auto it = sizes.find(t);
+  if (it == sizes.end()) fail("unknown property type '" + t + "'");
+  return it->second;
+}
+
+bool is_float(const std::string& t) {
+  return t == "float" || t == "float32" || t == "double" || t == "float64";
+}
+bool is_signed(const std::string& t) {
+  return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+}
+
+struct Property {
+  std::string name, type, count_type;  // count_type non-empty: a list
+};
+
+struct Element {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Property> properties;
+};
+
+enum class Format { Ascii, LittleEndian, BigEndian };
+
+// Reads binary values of `type` at data[offset]; throws when they run past the end.
+class BinaryBody {
+ public:
+  BinaryBody(const std::string& data, size_t offset, bool big_endian)
+      : data_(data), offset_(offset), big_(big_endian) {}
+
+  double read(const std::string& type) {
+    const int n = type_size(type);
+    if (data_.size() - offset_ < size_t(n))
+      fail("the file ends before the data its header declares");
+    unsigned char b[8];
+    std::memcpy(b, data_.data() + offset_, n);
+    offset_ += n;
+    if (big_) std::reverse(b, b + n);
+    if (is_float(type)) {
+      if (n == 4) {
+        float f;
+        std::memcpy(&f, b, 4);
+        return f;
+      }
+      double d;
+      std::memcpy(&d, b, 8);
+      return d;
+    }
+    std::uint64_t u = 0;
+    std::memcpy(&u, b, n);
+    if (is_signed(type) && n < 8 && (u >> (8 * n - 1)) & 1u) u |= ~std::uint64_t(0) << (8 * n);
+    return is_signed(type) ? double(std::int64_t(u)) : double(u);
+  }
+  void skip(std::uint64_t bytes) {
+    if (data_.size() - offset_ < bytes) fail("the file ends before the data its header declares");
+    offset_ += bytes;
+  }
+  size_t offset() const { return offset_; }
+
+ private:
+  const std::string& data_;
+  size_t offset_;
+  bool big_;
+};
+
+}  // namespace
+
+void check_ply_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("cannot open the file");
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+
+  // Header: up to "end_header".
+  size_t pos = 0;
+  auto next_line = [&](std::string& line) {
+    size_t end = data.find('\n', pos);
+    if (end == std::string::npos) fail("the header has no end_header line");
+    line = data.substr(pos, end - pos);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    pos = end + 1;
+  };
+  std::string line;
+  next_line(line);
+  if (line != "ply") fail("the file does not start with 'ply'");
+  Format format = Format::Ascii;
+  bool have_format = false;
+  std::vector<Element> elements;
+  for (;;) {
+    next_line(line);
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (word == "end_header") break;
+    if (word == "comment" || word == "obj_info" || word.empty()) continue;
+    if (word == "format") {
+      std::string f;
+      words >> f;
+      if (f == "ascii")
+        format = Format::Ascii;
+      else if (f == "binary_little_endian")
+        format = Format::LittleEndian;
+      else if (f == "binary_big_endian")
+        format = Format::BigEndian;
+      else
+        fail("unknown format '" + f + "'");
+      have_format = true;
+    } else if (word == "element") {
+      Element e;
+      std::string count;
+      words >> e.name >> count;
+      if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos ||
+          count.size() > 12)
+        fail("element '" + e.name + "' has no valid count ('" + count + "')");
+      e.count = std::stoull(count);
+      elements.push_back(e);
+    } else if (word == "property") {
+      if (elements.empty()) fail("a property before any element");
+      Property p;
+      std::string type;
+      words >> type;
+      if (type == "list") {
+        words >> p.count_type >> p.type >> p.name;
+        type_size(p.count_type);
+      } else {
+        p.type = type;
+        words >> p.name;
+      }
+      type_size(p.type);
+      if (p.name.empty()) fail("a property without a name");
+      elements.back().properties.push_back(p);
+    } else {
+      fail("unexpected header line '" + line + "'");
+    }
+  }
+  if (!have_format) fail("the header has no format line");
+
+  std::uint64_t vertices = 0;
+  for (const Element& e : elements)
+    if (e.name == "vertex") vertices = e.count;
+  auto check_index = [&](const Element& e, const Property& p, double v) {
+    if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index") &&
+        !(v >= 0.0 && v < double(vertices)))
+      fail("face vertex index " + std::to_string(std::int64_t(v)) + " outside the " +
+           std::to_string(vertices) + " vertices");
+  };
+
+  if (format == Format::Ascii) {
+    std::istringstream body(data.substr(pos));
+    std::string token;
+    auto value = [&]() {
+      if (!(body >> token)) fail("the file ends before the data its header declares");
+      char* end = nullptr;
+      const double v = std::strtod(token.c_str(), &end);
+      if (*end != '\0') fail("'" + token + "' is not a number");
+      return v;
+    };
+    for (const Element& e : elements)
+      for (std::uint64_t i = 0; i < e.count; ++i)
+        for (const Property& p : e.properties) {
+          if (p.count_type.empty()) {
+            value();
+            continue;
+          }
+          const double n = value();
+          if (!(n >= 0.0) || n > 1e9) fail("a list length of " + token);
+          for (std::uint64_t k = 0; k < std::uint64_t(n); ++k) check_index(e, p, value());
+        }
+    return;
+  }
+
+  BinaryBody body(data, pos, format == Format::BigEndian);
+  for (const Element& e : elements) {
+    bool fixed = true;
+    std::uint64_t item_bytes = 0;
+    for (const Property& p : e.properties) {
+      fixed &= p.count_type.empty();
+      item_bytes += std::uint64_t(type_size(p.type));
+    }
+    if (fixed) {  // fixed-size items: only the total length matters
+      if (e.count > (data.size() - body.offset()) / std::max<std::uint64_t>(item_bytes, 1))
+        fail("the file ends before the data its header declares");
+      body.skip(e.count * item_bytes);
+      continue;
+    }
+    for (std::uint64_t i = 0; i < e.count; ++i)
+      for (const Property& p : e.properties) {
+        if (p.count_type.empty()) {
+          body.read(p.type);
+          continue;
+        }
+        const double n = body.read(p.count_type);
+        if (!(n >= 0.0)) fail("a negative list length");
+        for (std::uint64_t k = 0; k < std::uint64_t(n); ++k) check_index(e, p, body.read(p.type));
+      }
+  }
+}
+
+}  // namespace tr

@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# Hostile inputs through the command line (issue 12): a table of cases, each with the exit
+# status and the message (an extended regular expression) it must give. Every refused render
+# leaves no output file and an existing one untouched; nothing crashes (a status above 8 or a
+# signal fails the case). usage: hostile.sh TWINRAY
+set -u
+export LC_ALL=C
+twinray=$1
+d=$(mktemp -d)
+trap 'rm -rf "$d"' EXIT
+failures=0 cases=0
+
+# --- inputs ------------------------------------------------------------------------------
+scene() {  # scene NAME BODY: a scene file d/NAME.xml with a working sensor around BODY
+  cat >"$d/$1.xml" <<EOF
+<scene version="3.0.0">
+  <sensor type="perspective">
+    <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
+    <sampler type="independent"><integer name="sample_count" value="2"/></sampler>
+  </sensor>
+$2
+</scene>
+EOF
+}
+lit() { scene "$1" "<emitter type=\"constant\"/>
+$2"; }
+mesh() { echo "<shape type=\"$1\"><string name=\"filename\" value=\"$2\"/></shape>"; }
+
+lit ok '<shape type="sphere"/>'
+head -c 150 "$d/ok.xml" >"$d/truncated.xml"
+sed 's#</sensor>#</film>#' "$d/ok.xml" >"$d/mismatched.xml"
+head -c 4096 /dev/urandom >"$d/binary.xml"
+: >"$d/empty.xml"
+printf '<scene version="3.0.0">' >"$d/unclosed.xml"
+lit unknown_plugin '<shape type="sphere"><bsdf type="velvet"/></shape>'
+lit unknown_parameter '<shape type="sphere"><bsdf type="diffuse"><float name="glossiness" value="1"/></bsdf></shape>'
+lit wrong_type '<shape type="sphere"><bsdf type="diffuse"><string name="reflectance" value="red"/></bsdf></shape>'
+lit bad_float '<shape type="sphere"><float name="radius" value="abc"/></shape>'
+lit bad_integer '<shape type="sphere"/><integrator type="path"><integer name="max_depth" value="2.5"/></integrator>'
+lit huge_integer '<shape type="sphere"/><integrator type="path"><integer name="max_depth" value="99999999999999999999"/></integrator>'
+lit undefined_default '<shape type="sphere"><float name="radius" value="$size"/></shape>'
+lit missing_include '<include filename="nowhere.xml"/>'
+echo '<scene version="3.0.0"><include filename="cycle_b.xml"/></scene>' >"$d/cycle_a.xml"
+echo '<scene version="3.0.0"><include filename="cycle_a.xml"/></scene>' >"$d/cycle_b.xml"
+lit include_cycle '<include filename="cycle_a.xml"/>'
+lit unknown_ref '<shape type="sphere"><ref id="nothing"/></shape>'
+lit duplicate_id '<bsdf type="diffuse" id="a"/><bsdf type="diffuse" id="a"/><shape type="sphere"><ref id="a"/></shape>'
+lit bad_version '<shape type="sphere"/>'
+sed -i 's/version="3.0.0"/version="banana"/' "$d/bad_version.xml"
+lit old_version '<shape type="sphere"/>'
+sed -i 's/version="3.0.0"/version="0.6.0"/' "$d/old_version.xml"
+lit missing_obj "$(mesh obj missing.obj)"
+: >"$d/empty.obj"
+lit empty_obj "$(mesh obj empty.obj)"
+head -c 2048 /dev/urandom >"$d/garbage.obj"
+lit garbage_obj "$(mesh obj garbage.obj)"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$d/bad_index.obj"
+lit bad_index_obj "$(mesh obj bad_index.obj)"
+printf 'v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$d/nan_vertex.obj"
+lit nan_vertex_obj "$(mesh obj nan_vertex.obj)"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 4 5 6\n' >"$d/zero_area.obj"
+lit zero_area_obj "$(mesh obj zero_area.obj)"
+lit missing_ply "$(mesh ply missing.ply)"
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n' >"$d/truncated.ply"
+head -c 20 /dev/urandom >>"$d/truncated.ply"
+lit truncated_ply "$(mesh ply truncated.ply)"
+printf 'ply\nformat ascii 1.0\nelement vertex banana\nend_header\n' >"$d/bad_header.ply"
+lit bad_header_ply "$(mesh ply bad_header.ply)"
+ply_ascii() {  # ply_ascii NAME LAST_FACE_LINE
+  printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 3\n1 0 3\n0 1 3\n%s\n' "$2" >"$d/$1.ply"
+  lit "$1_ply" "$(mesh ply "$1.ply")"
+}
+ply_ascii good_ascii '3 0 1 2'
+ply_ascii index_ascii '3 0 1 7'
+ply_ascii short_ascii '3 0 1'
+texture() { lit "$1" "<shape type=\"sphere\"><bsdf type=\"diffuse\"><texture name=\"reflectance\" type=\"bitmap\"><string name=\"filename\" value=\"$2\"/></texture></bsdf></shape>"; }
+texture missing_image missing.png
+: >"$d/empty.png"
+texture empty_image empty.png
+{ printf '\x89PNG\r\n\x1a\n'; head -c 500 /dev/urandom; } >"$d/corrupt.png"
+texture corrupt_image corrupt.png
+mkdir "$d/folder.png"
+texture folder_image folder.png
+lit nan_radius '<shape type="sphere"><float name="radius" value="nan"/></shape>'
+lit inf_translate '<shape type="sphere"><transform name="to_world"><translate x="inf"/></transform></shape>'
+scene nan_radiance '<shape type="sphere"/><emitter type="constant"><rgb name="radiance" value="nan, 1, 1"/></emitter>'
+scene negative_radiance '<shape type="sphere"/><emitter type="constant"><rgb name="radiance" value="-1, 1, 1"/></emitter>'
+lit negative_reflectance '<shape type="sphere"><bsdf type="diffuse"><rgb name="reflectance" value="-0.5"/></bsdf></shape>'
+lit zero_width '<shape type="sphere"/>'
+sed -i 's/name="width" value="8"/name="width" value="0"/' "$d/zero_width.xml"
+lit overflow_size '<shape type="sphere"/>'
+sed -i 's/value="8"/value="4000000000"/g' "$d/overflow_size.xml"
+lit huge_size '<shape type="sphere"/>'
+sed -i 's/value="8"/value="60000"/g' "$d/huge_size.xml"
+lit negative_spp '<shape type="sphere"/>'
+sed -i 's/name="sample_count" value="2"/name="sample_count" value="-4"/' "$d/negative_spp.xml"
+scene empty_scene ''
+scene no_emitter '<shape type="sphere"/>'
+echo '<scene version="3.0.0"/>' >"$d/bare.xml"
+mkdir -p "$d/readonly"
+
+# --- the table -------------------------------------------------------------------------
+# check NAME EXPECTED_STATUS MESSAGE_REGEX -- twinray arguments
+check() {
+  local name=$1 want=$2 regex=$3
+  shift 4
+  cases=$((cases + 1))
+  rm -rf "$d/out" && mkdir "$d/out" && echo "previous render" >"$d/out/img.exr"
+  timeout 120 "$twinray" "$@" >"$d/stdout" 2>"$d/stderr"
+  local status=$?
+  local msg
+  msg=$(head -c 400 "$d/stderr" | head -n 3)
+  if [ "$status" != "$want" ]; then
+    echo "FAIL $name: exit $status, expected $want: $msg"; failures=$((failures + 1)); return
+  fi
+  if ! grep -Eq -- "$regex" "$d/stderr" "$d/stdout"; then
+    echo "FAIL $name: message does not match /$regex/: $msg"; failures=$((failures + 1)); return
+  fi
+  if [ "$want" != 0 ] && [ "$want" != 7 ]; then
+    if [ "$(cat "$d/out/img.exr")" != "previous render" ] || [ -e "$d/out/img_var.exr" ] ||
+      [ -e "$d/out/img.png" ] || [ "$(ls "$d/out" | wc -l)" != 1 ]; then
+      echo "FAIL $name: output files were written or changed"; failures=$((failures + 1)); return
+    fi
+  fi
+  echo "ok   $name ($status): ${msg:-$(tail -n 1 "$d/stdout")}"
+}
+r() { echo render "$d/$1.xml" -o "$d/out/img.exr"; }
+
+check truncated_xml 3 'truncated\.xml:[0-9]+: ' -- $(r truncated)
+check mismatched_tags 3 'mismatched\.xml:[0-9]+: ' -- $(r mismatched)
+check binary_file 3 'binary\.xml:[0-9]+: ' -- $(r binary)
+check empty_file 3 'empty\.xml:[0-9]+: ' -- $(r empty)
+check unclosed_scene 3 'unclosed\.xml:[0-9]+: ' -- $(r unclosed)
+check unknown_plugin 3 'unknown_plugin\.xml:[0-9]+: .*velvet' -- $(r unknown_plugin)
+check unknown_parameter 3 'unknown_parameter\.xml:[0-9]+: .*glossiness' -- $(r unknown_parameter)
+check wrong_value_type 3 'wrong_type\.xml:[0-9]+: .*reflectance' -- $(r wrong_type)
+check bad_float 3 'bad_float\.xml:[0-9]+: .*abc' -- $(r bad_float)
+check bad_integer 3 'bad_integer\.xml:[0-9]+: .*2\.5' -- $(r bad_integer)
+check huge_integer 3 'huge_integer\.xml:[0-9]+: .*max_depth' -- $(r huge_integer)
+check undefined_default 3 'undefined_default\.xml:[0-9]+: .*size' -- $(r undefined_default)
+check missing_include 3 'missing_include\.xml:[0-9]+: .*nowhere\.xml' -- $(r missing_include)
+check include_cycle 3 'cycle_.\.xml:[0-9]+: .*(cycle|recurs|itself)' -- $(r include_cycle)
+check unknown_ref 3 'unknown_ref\.xml:[0-9]+: .*nothing' -- $(r unknown_ref)
+check duplicate_id 3 'duplicate_id\.xml:[0-9]+: .*"?a"?' -- $(r duplicate_id)
+check bad_version 3 'bad_version\.xml:[0-9]+: .*version' -- $(r bad_version)
+check mitsuba_0_scene 3 'old_version\.xml:[0-9]+: .*0\.x' -- $(r old_version)
+check missing_obj 3 'missing_obj\.xml:[0-9]+: .*missing\.obj' -- $(r missing_obj)
+check empty_obj 3 'empty_obj\.xml:[0-9]+: .*empty\.obj' -- $(r empty_obj)
+check garbage_obj 3 'garbage_obj\.xml:[0-9]+: .*garbage\.obj' -- $(r garbage_obj)
+check obj_index_out_of_range 3 'bad_index_obj\.xml:[0-9]+: .*bad_index\.obj' -- $(r bad_index_obj)
+check obj_nan_vertex 3 'nan_vertex_obj\.xml:[0-9]+: .*nan_vertex\.obj' -- $(r nan_vertex_obj)
+check obj_zero_area_triangles 0 'twinray: 8x8' -- $(r zero_area_obj)
+check missing_ply 3 'missing_ply\.xml:[0-9]+: .*missing\.ply' -- $(r missing_ply)
+check truncated_ply 3 'truncated_ply\.xml:[0-9]+: .*truncated\.ply' -- $(r truncated_ply)
+check ply_ascii_loads 0 'twinray: 8x8' -- $(r good_ascii_ply)
+check ply_face_index_out_of_range 3 'index_ascii_ply\.xml:[0-9]+: .*outside the 3 vertices' -- $(r index_ascii_ply)
+check ply_ascii_truncated 3 'short_ascii_ply\.xml:[0-9]+: .*ends before' -- $(r short_ascii_ply)
+check ply_bad_header 3 'bad_header_ply\.xml:[0-9]+: .*bad_header\.ply' -- $(r bad_header_ply)
+check missing_image 3 'missing_image\.xml:[0-9]+: .*missing\.png' -- $(r missing_image)
+check empty_image 3 'empty_image\.xml:[0-9]+: .*empty\.png' -- $(r empty_image)
+check corrupt_image 3 'corrupt_image\.xml:[0-9]+: .*corrupt\.png' -- $(r corrupt_image)
+check image_is_a_folder 3 'folder_image\.xml:[0-9]+: .*folder\.png' -- $(r folder_image)
+check nan_radius 3 'nan_radius\.xml:[0-9]+: .*radius' -- $(r nan_radius)
+check inf_transform 3 'inf_translate\.xml:[0-9]+: ' -- $(r inf_translate)
+check nan_radiance 3 'nan_radiance\.xml:[0-9]+: .*radiance' -- $(r nan_radiance)
+check negative_radiance 3 'negative_radiance\.xml:[0-9]+: .*radiance' -- $(r negative_radiance)
+check negative_reflectance 3 'negative_reflectance\.xml:[0-9]+: .*reflectance' -- $(r negative_reflectance)
+check zero_width 3 'zero_width\.xml:[0-9]+: .*width' -- $(r zero_width)
+check overflowing_size 3 'overflow_size\.xml:[0-9]+: .*width' -- $(r overflow_size)
+check size_beyond_memory 3 'huge_size\.xml:[0-9]+: .*GiB of memory' -- $(r huge_size)
+check negative_spp 3 'negative_spp\.xml:[0-9]+: .*sample_count' -- $(r negative_spp)
+check empty_scene 0 'twinray: 8x8' -- $(r empty_scene)
+check scene_without_emitters 0 'twinray: 8x8' -- $(r no_emitter)
+check scene_without_sensor 3 'bare\.xml:[0-9]+: .*no <sensor>' -- render "$d/bare.xml" -o "$d/out/img.exr"
+check absurd_spp 2 '--spp' -- $(r ok) --spp 99999999999
+check zero_spp 2 '--spp' -- $(r ok) --spp 0
+check no_scene_file 3 'nowhere\.xml' -- render "$d/nowhere.xml" -o "$d/out/img.exr"
+check scene_is_a_folder 3 'readonly' -- render "$d/readonly" -o "$d/out/img.exr"
+check unwritable_output_folder 5 'proc' -- render "$d/ok.xml" -o /proc/img.exr
+check missing_output_folder 5 'does not exist' -- render "$d/ok.xml" -o "$d/nowhere/img.exr"
+check unknown_option 2 'unknown option' -- $(r ok) --fast
+check define_without_value 2 'NAME=VALUE' -- $(r ok) -D spp
+check unknown_backend 2 'backend' -- $(r ok) --backend tpu
+check missing_checkpoint 8 'checkpoint' -- $(r ok) --resume "$d/nowhere.checkpoint"
+check bad_time_budget 2 '--time' -- $(r ok) --time -3
+
+echo "$cases cases, $failures failed"
+exit $((failures > 0))
