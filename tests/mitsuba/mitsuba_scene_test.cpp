@@ -1,6 +1,7 @@
 // One Mitsuba test scene of a suite file, rendered on the CPU with the suite's spp and seed
 // and judged by the acceptance rule of shared/mitsuba-tests/README.md (its per-pixel and
-// per-block tests at family-wise alpha 0.01 each). The gain test is printed for information.
+// per-block tests at family-wise alpha 0.01 each), and no sample may be NaN or infinite. The gain
+// test is printed for information.
 // usage: mitsuba_scene_test SUITE NAME   (exit 0 pass, 1 fail, 2 bad input)
 #include <cstdio>
 #include <exception>
@@ -27,8 +28,12 @@ int main(int argc, char** argv) {
                 r.result.width, r.result.height, spp, seed, r.result.stats.seconds);
     std::printf("  %s\n  %s\n  %s (information only)\n", tr::describe_test(a.pixel_z).c_str(),
                 tr::describe_test(a.block_z).c_str(), tr::describe_test(a.gain_z).c_str());
-    std::printf("%s: %s\n", e.name.c_str(), a.passed ? "PASS" : "FAIL");
-    return a.passed ? 0 : 1;
+    // Every bundled scene renders without a NaN/Inf sample (issue 12).
+    const std::uint64_t nonfinite = r.result.stats.rejected_nonfinite;
+    std::printf("  NaN/Inf samples: %llu\n", static_cast<unsigned long long>(nonfinite));
+    const bool passed = a.passed && nonfinite == 0;
+    std::printf("%s: %s\n", e.name.c_str(), passed ? "PASS" : "FAIL");
+    return passed ? 0 : 1;
   } catch (const std::exception& ex) {
     std::fprintf(stderr, "mitsuba_scene_test: %s\n", ex.what());
     return 2;
