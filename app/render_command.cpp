@@ -63,7 +63,7 @@ struct RenderArgs {
   std::string resume;
 };
 
-double positive_seconds(const std::string& option, const std::string& value) {
+double positive_number(const std::string& option, const std::string& value) {
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
   if (value.empty() || *end != '\0' || !(v > 0.0) || !std::isfinite(v))
@@ -96,11 +96,11 @@ RenderArgs parse(int argc, char** argv) {
     } else if (arg == "--device") {
       a.render.device = args.value(arg);
     } else if (arg == "--time") {
-      a.budget.seconds = positive_seconds(arg, args.value(arg));
+      a.budget.seconds = positive_number(arg, args.value(arg));
     } else if (arg == "--target-error") {
-      a.budget.error = positive_seconds(arg, args.value(arg));
+      a.budget.error = positive_number(arg, args.value(arg));
     } else if (arg == "--checkpoint") {
-      a.checkpoint_seconds = positive_seconds(arg, args.value(arg));
+      a.checkpoint_seconds = positive_number(arg, args.value(arg));
     } else if (arg == "--resume") {
       a.resume = args.value(arg);
     } else if (!arg.empty() && arg[0] == '-') {
