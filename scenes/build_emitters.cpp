@@ -90,7 +90,11 @@ void SceneBuilder::add_emitter(Node& n) {
     store_rows(to_world, e.to_world);
     store_rows(glm::inverse(to_world), e.to_local);
     // Mitsuba converts the map to the variant's float type (no half-precision storage).
-    auto [offset, size] = load_texels(n, file, false, false, TexelFormat::Variant);
+    // (Not a structured binding: the lambda below uses offset, which C++17 cannot capture.)
+    const std::pair<uint, glm::uvec2> texels =
+        load_texels(n, file, false, false, TexelFormat::Variant);
+    const uint offset = texels.first;
+    const glm::uvec2 size = texels.second;
     if (size.x < 2u || size.y < 3u)
       fail(find_property(n, "filename")->loc, describe(n), ": \"", file, "\" is ", size.x, "x",
            size.y, " pixels; an environment map must be at least 2x3 (as in Mitsuba)");

@@ -157,12 +157,35 @@ void check_ply_file(const std::string& path) {
   }
   if (!have_format) fail("the header has no format line");
 
+  // What a triangle mesh needs (Mitsuba's ply.cpp asks the same): vertices with scalar x, y, z,
+  // and faces, if any, as a list of vertex indices.
   std::uint64_t vertices = 0;
-  for (const Element& e : elements)
-    if (e.name == "vertex") vertices = e.count;
+  bool have_vertices = false;
+  for (const Element& e : elements) {
+    auto has = [&](const char* name, bool list) {
+      for (const Property& p : e.properties)
+        if (p.name == name && p.count_type.empty() != list) return true;
+      return false;
+    };
+    if (e.name == "vertex") {
+      if (!has("x", false) || !has("y", false) || !has("z", false))
+        fail("the vertex element lacks one of the scalar properties x, y, z");
+      vertices = e.count;
+      have_vertices = true;
+    } else if (e.name == "face" && !has("vertex_indices", true) && !has("vertex_index", true)) {
+      fail("the face element has no list property vertex_indices");
+    }
+  }
+  if (!have_vertices) fail("the file has no vertex element");
+  auto is_face_indices = [](const Element& e, const Property& p) {
+    return e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+  };
+  auto check_face_size = [&](const Element& e, const Property& p, double n) {
+    if (is_face_indices(e, p) && n < 3.0)
+      fail("a face with " + std::to_string(std::int64_t(n)) + " vertices (at least 3)");
+  };
   auto check_index = [&](const Element& e, const Property& p, double v) {
-    if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index") &&
-        !(v >= 0.0 && v < double(vertices)))
+    if (is_face_indices(e, p) && !(v >= 0.0 && v < double(vertices)))
       fail("face vertex index " + std::to_string(std::int64_t(v)) + " outside the " +
            std::to_string(vertices) + " vertices");
   };
@@ -186,6 +209,7 @@ void check_ply_file(const std::string& path) {
           }
           const double n = value();
           if (!(n >= 0.0) || n > 1e9) fail("a list length of " + token);
+          check_face_size(e, p, n);
           for (std::uint64_t k = 0; k < std::uint64_t(n); ++k) check_index(e, p, value());
         }
     return;
@@ -213,6 +237,7 @@ void check_ply_file(const std::string& path) {
         }
         const double n = body.read(p.count_type);
         if (!(n >= 0.0)) fail("a negative list length");
+        check_face_size(e, p, n);
         for (std::uint64_t k = 0; k < std::uint64_t(n); ++k) check_index(e, p, body.read(p.type));
       }
   }

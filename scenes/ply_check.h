@@ -7,8 +7,9 @@
 
 namespace tr {
 
-// Throws std::runtime_error ("PLY: what") when the header is malformed, the body holds fewer
-// values than the header declares, or a face (an element "face" with a list property
+// Throws std::runtime_error ("PLY: what") when the header is malformed or lacks a vertex
+// element with x, y, z (or a face element's index list), the body holds fewer values than the
+// header declares, or a face (an element "face" with a list property
 // "vertex_indices" or "vertex_index") names a vertex that does not exist.
 void check_ply_file(const std::string& path);
 

@@ -71,8 +71,12 @@ ply_ascii() {  # ply_ascii NAME LAST_FACE_LINE
   lit "$1_ply" "$(mesh ply "$1.ply")"
 }
 ply_ascii good_ascii '3 0 1 2'
+# Found by scripts/fuzz (Assimp crashed on it): a vertex element without x, y, z.
+printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float v\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n1\n0\n3 0 1 1\n' >"$d/no_xyz.ply"
+lit no_xyz_ply "$(mesh ply no_xyz.ply)"
 ply_ascii index_ascii '3 0 1 7'
 ply_ascii short_ascii '3 0 1'
+ply_ascii two_corner_face '2 0 1'  # found by scripts/fuzz: Assimp aborted on a 0-vertex face
 texture() { lit "$1" "<shape type=\"sphere\"><bsdf type=\"diffuse\"><texture name=\"reflectance\" type=\"bitmap\"><string name=\"filename\" value=\"$2\"/></texture></bsdf></shape>"; }
 texture missing_image missing.png
 : >"$d/empty.png"
@@ -154,6 +158,8 @@ check missing_ply 3 'missing_ply\.xml:[0-9]+: .*missing\.ply' -- $(r missing_ply
 check truncated_ply 3 'truncated_ply\.xml:[0-9]+: .*truncated\.ply' -- $(r truncated_ply)
 check ply_ascii_loads 0 'twinray: 8x8' -- $(r good_ascii_ply)
 check ply_face_index_out_of_range 3 'index_ascii_ply\.xml:[0-9]+: .*outside the 3 vertices' -- $(r index_ascii_ply)
+check ply_vertex_without_xyz 3 'no_xyz_ply\.xml:[0-9]+: .*x, y, z' -- $(r no_xyz_ply)
+check ply_degenerate_face 3 'two_corner_face_ply\.xml:[0-9]+: .*at least 3' -- $(r two_corner_face_ply)
 check ply_ascii_truncated 3 'short_ascii_ply\.xml:[0-9]+: .*ends before' -- $(r short_ascii_ply)
 check ply_bad_header 3 'bad_header_ply\.xml:[0-9]+: .*bad_header\.ply' -- $(r bad_header_ply)
 check missing_image 3 'missing_image\.xml:[0-9]+: .*missing\.png' -- $(r missing_image)
