@@ -3,6 +3,7 @@
 //    1e5, and 1e5 away from the origin: every pixel is rho E / pi. Direct lighting of a plane
 //    by a delta light has no noise, so a pixel off by more than 1% is a geometric error: a
 //    shadow ray that re-hits the plane it left (acne), a camera ray that misses;
+//  - the same plane seen at 60, 85 and 89 degrees from its normal (grazing views);
 //  - the same plane under irradiance 1e-6 and 1e8 (float range of the radiance path);
 //  - a spherical light of radius 1e-5 (extremes_tiny_light.xml): the image mean against the
 //    analytic irradiance of a small sphere, rho L r^2 h / d^3 averaged over the view.
@@ -24,17 +25,24 @@ std::string number(double v) {
   return s;
 }
 
-RenderResult render_plane(double scale, double offset, double irradiance) {
+// The camera at `view_angle` (degrees) from the plane's normal, far enough that its whole
+// view (half-height 0.5 scale, slanted by the angle) lies in front of it.
+RenderResult render_plane(double scale, double offset, double irradiance, double view_angle = 0.0,
+                          double plane_scale = 1.0) {
+  const double a = view_angle * M_PI / 180.0;
+  const double distance = scale * (2.0 + 0.6 * std::tan(a));
   LoadOptions load;
-  load.defines = {{"s", number(scale)},
+  load.defines = {{"s", number(scale * plane_scale)},
                   {"ox", number(offset)},
                   {"oy", number(-offset)},
                   {"oz", number(offset)},
                   {"E", number(irradiance)},
                   {"half", number(0.5 * scale)},
-                  {"cz", number(offset + 2.0 * scale)},
+                  {"cx", number(offset)},
+                  {"cy", number(-offset - distance * std::sin(a))},
+                  {"cz", number(offset + distance * std::cos(a))},
                   {"near", number(0.5 * scale)},
-                  {"far", number(4.0 * scale)}};
+                  {"far", number(2.0 * distance)}};
   return render_file(test_scene("extremes_plane.xml"), {}, load);
 }
 
@@ -64,6 +72,14 @@ TEST(Extremes, PlaneFarFromTheOrigin) {
   for (double s : {1.0, 100.0})
     expect_every_pixel(render_plane(s, 1e5, 1.0), 0.5 / M_PI,
                        "scale " + number(s) + " at (1e5, -1e5, 1e5)");
+}
+
+TEST(Extremes, GrazingViews) {
+  // At 89 degrees the view's footprint on the plane is 1 / cos(89) = 57 times longer: the
+  // plane is made 60 times larger. Lambertian radiance does not depend on the view.
+  for (double angle : {60.0, 85.0, 89.0})
+    expect_every_pixel(render_plane(1.0, 0.0, 1.0, angle, 60.0), 0.5 / M_PI,
+                       "view at " + number(angle) + " degrees");
 }
 
 TEST(Extremes, TinyAndHugeIrradiance) {
