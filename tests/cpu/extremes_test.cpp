@@ -5,6 +5,8 @@
 //    shadow ray that re-hits the plane it left (acne), a camera ray that misses;
 //  - the same plane seen at 60, 85 and 89 degrees from its normal (grazing views);
 //  - the same plane under irradiance 1e-6 and 1e8 (float range of the radiance path);
+//  - a slab 1e-5 and 1e-7 thin floating 10 thicknesses above the plane (extremes_thin_slab.xml):
+//    its top and the plane beside it both rho E cos(30) / pi;
 //  - a spherical light of radius 1e-5 (extremes_tiny_light.xml): the image mean against the
 //    analytic irradiance of a small sphere, rho L r^2 h / d^3 averaged over the view.
 // No sample may be NaN or infinite in any of them.
@@ -85,6 +87,17 @@ TEST(Extremes, GrazingViews) {
 TEST(Extremes, TinyAndHugeIrradiance) {
   for (double e : {1e-6, 1e8})
     expect_every_pixel(render_plane(1.0, 0.0, e), 0.5 * e / M_PI, "irradiance " + number(e));
+}
+
+TEST(Extremes, RazorThinSlab) {
+  // Thickness 1e-5 and 1e-7 at heights 1e-4 and 1e-6 above the plane.
+  for (double t : {1e-5, 1e-7}) {
+    const double h = 10.0 * t;
+    LoadOptions load;
+    load.defines = {{"half_t", number(0.5 * t)}, {"center_z", number(h + 0.5 * t)}};
+    expect_every_pixel(render_file(test_scene("extremes_thin_slab.xml"), {}, load),
+                       0.5 * std::cos(M_PI / 6.0) / M_PI, "slab of thickness " + number(t));
+  }
 }
 
 TEST(Extremes, LightOfRadiusOneHundredThousandth) {
