@@ -16,9 +16,14 @@ struct Image {
   std::vector<glm::vec4> texels;  // Y is broadcast to RGB; alpha 1 when the file has none
 };
 
+// Larger than any texture in practice; a header claiming more is refused before anything is
+// allocated for it.
+constexpr int kMaxImageSide = 65536;
+
 // Integer-valued images (8/16-bit PNG, JPEG, ...) are sRGB-encoded and decoded to linear
 // (IEC 61966-2-1 transfer function) unless `raw`, as Mitsuba's bitmap texture does; float
-// images (EXR, HDR) are taken as linear. Throws std::runtime_error with a one-line reason.
+// images (EXR, HDR) are taken as linear. Throws std::runtime_error with a one-line reason (also for
+// more than kMaxImageSide texels a side, or more texels than this machine's memory holds).
 Image load_image(const std::string& path, bool raw);
 
 float srgb_to_linear(float c);

@@ -126,5 +126,69 @@ TEST(Texture, ImagesLoadTopRowFirstAndSrgbDecoded) {
   expect_vec(eval_texture(tex, vec2(0.25f, 0.75f)), vec3(float(Imath::half(grey))));
 }
 
+// Every band of rows reaches its place, from a tiled file and from one whose data window does
+// not start at the origin; 64 x 40 with more rows than a band of a 32768-texel-wide image.
+TEST(Texture, TiledAndOffsetImagesLoadWhole) {
+  std::filesystem::path dir = fresh_dir();
+  const int w = 64, h = 40;
+  std::vector<float> pixels(size_t(w) * h * 3);
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % 977) / 977.0f;
+  for (bool tiled : {false, true}) {
+    std::string exr = (dir / (tiled ? "tiled.exr" : "offset.exr")).string();
+    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::FLOAT);
+    if (tiled) {
+      spec.tile_width = spec.tile_height = 16;
+    } else {
+      spec.x = 5;
+      spec.y = -7;
+    }
+    auto out = OIIO::ImageOutput::create(exr);
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(exr, spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    out->close();
+    Image image = load_image(exr, false);
+    ASSERT_EQ(image.texels.size(), size_t(w) * h);
+    for (size_t i = 0; i < image.texels.size(); ++i)
+      ASSERT_EQ(image.texels[i], glm::vec4(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2], 1))
+          << exr << " texel " << i;
+  }
+}
+
+// A 70-byte BMP whose header claims 2 x 100663298 texels (found by scripts/fuzz) is refused
+// before the 2.4 GB it would take are allocated.
+TEST(Texture, HeadersClaimingHugeImagesAreRefused) {
+  std::filesystem::path dir = fresh_dir();
+  const unsigned char bmp[] = {
+      0x42, 0x4d, 0x46, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x36, 0x00, 0x00, 0x00,
+      0x28, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x06, 0x01, 0x00,
+      0x18, 0x00, 0x00, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x09, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xff, 0xff,
+      0xff, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xff, 0xff, 0xff, 0x00, 0x00};
+  std::string path = write_file(dir, "huge.bmp", std::string(bmp, bmp + sizeof(bmp)));
+  try {
+    load_image(path, false);
+    FAIL() << "the image was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "image of 2 x 100663298 texels: twinray reads at most 65536 per side");
+  }
+}
+
+// Found by scripts/fuzz: OpenEXR allocated an attribute's claimed 1.7 GB before failing.
+TEST(Texture, ExrAttributesLargerThanTheFileAreRefused) {
+  std::filesystem::path dir = fresh_dir();
+  std::string exr("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+  exr += std::string("comments\0string\0", 16) + std::string("\x5d\x6e\x20\x66", 4) + "short";
+  std::string path = write_file(dir, "attribute.exr", exr);
+  try {
+    load_image(path, false);
+    FAIL() << "the image was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "cannot open image: EXR attribute 'comments' claims 1713401437 bytes, the file "
+                 "has 5 left");
+  }
+}
+
 }  // namespace
 }  // namespace tr
