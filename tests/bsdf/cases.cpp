@@ -293,7 +293,8 @@ void add_bsdfs(StatisticalList& list) {
     for (Distribution d : distributions) {
       for (const Setting& s : settings) {
         for (bool visible : {true, false}) {
-          if (!visible && s.alpha_u != s.alpha_v) continue;
+          // Sampling all normals is checked on the plain isotropic settings only.
+          if (!visible && (s.alpha_u != s.alpha_v || s.diffuse != plastic_diffuse)) continue;
           list.bsdf(
               std::string("pplastic_") + name_of(d),
               std::string("pplastic ") + name_of(d) + " " + s.name + (visible ? " vis" : " all"),
