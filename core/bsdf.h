@@ -22,6 +22,7 @@
 #include "core/bsdf/dielectric.h"
 #include "core/bsdf/diffuse.h"
 #include "core/bsdf/plastic.h"
+#include "core/bsdf/pplastic.h"
 #include "core/bsdf/principled.h"
 #include "core/bsdf/roughconductor.h"
 #include "core/bsdf/roughdielectric.h"
@@ -59,6 +60,9 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
     case BSDF_PRINCIPLED:
       if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_flags(m, uv);
       break;
+    case BSDF_PPLASTIC:
+      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_flags(m, uv);
+      break;
     default:
       break;
   }
@@ -86,6 +90,9 @@ INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
     case BSDF_PRINCIPLED:
       if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_eval(m, uv, wi, wo);
       break;
+    case BSDF_PPLASTIC:
+      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_eval(m, uv, wi, wo);
+      break;
     default:
       break;
   }
@@ -111,6 +118,9 @@ INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
       break;
     case BSDF_PRINCIPLED:
       if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_pdf(m, uv, wi, wo);
+      break;
+    case BSDF_PPLASTIC:
+      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_pdf(m, uv, wi, wo);
       break;
     default:
       break;
@@ -146,6 +156,9 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
       break;
     case BSDF_PRINCIPLED:
       if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_sample(m, uv, wi, u1, u2);
+      break;
+    case BSDF_PPLASTIC:
+      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_sample(m, uv, wi, u1, u2);
       break;
     default:
       break;

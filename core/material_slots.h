@@ -30,6 +30,11 @@ const uint PLASTIC_DIFFUSE_REFLECTANCE = 0u;
 const uint PLASTIC_SPECULAR_REFLECTANCE = 1u;
 const uint PLASTIC_ALPHA = 2u;  // roughplastic only
 
+// pplastic (diffuse and specular reflectance in the plastic slots above)
+const uint PPLASTIC_ALPHA_U = 2u;
+const uint PPLASTIC_ALPHA_V = 3u;
+const uint PPLASTIC_ETA = 4u;  // relative IOR, a texture in Mitsuba (`eta`)
+
 // principled (Material.eta holds `eta`)
 const uint PRINCIPLED_BASE_COLOR = 0u;
 const uint PRINCIPLED_ROUGHNESS = 1u;

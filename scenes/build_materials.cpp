@@ -409,6 +409,8 @@ Material SceneBuilder::build_material(Node& n) {
       m.param[PLASTIC_ALPHA] = constant_value(glm::dvec3(roughplastic_alpha(n)));
       m.param[ROUGHPLASTIC_TABLE] = roughplastic_table(m);
     }
+  } else if (type == "pplastic") {
+    m = build_pplastic(n);
   } else if (type == "principled") {
     m = build_principled(n);
   } else if (type == "twosided" || type == "mask") {
@@ -440,9 +442,41 @@ Material SceneBuilder::build_material(Node& n) {
   } else {
     fail(n.loc, "unknown BSDF type \"", type,
          "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-         "thindielectric, plastic, roughplastic, principled, twosided, mask)");
+         "thindielectric, plastic, roughplastic, pplastic, principled, twosided, mask)");
   }
   check_consumed(n);
+  return m;
+}
+
+// Mitsuba 3 `pplastic` (src/bsdfs/pplastic.cpp), parameter by parameter:
+//   diffuse_reflectance  texture, 0.5      specular_reflectance  texture, 1
+//   int_ior / ext_ior    polypropylene / air (numbers or names), positive and different
+//   eta                  texture (unbounded), instead of int_ior/ext_ior, never with them
+//   distribution         beckmann | ggx, beckmann   sample_visible  true
+//   alpha, or alpha_u with alpha_v   textures (unbounded), 0.1
+// Material.extra is the specular sampling weight s_mean / (d_mean + s_mean); Mitsuba divides
+// 0 by 0 when both reflectances are black (a black BSDF either way): 0.5 here.
+Material SceneBuilder::build_pplastic(Node& n) {
+  Material m = empty_material(BSDF_PPLASTIC);
+  m.param[PLASTIC_DIFFUSE_REFLECTANCE] = textured(n, "diffuse_reflectance", glm::dvec3(0.5), false);
+  m.param[PLASTIC_SPECULAR_REFLECTANCE] =
+      textured(n, "specular_reflectance", glm::dvec3(1.0), false);
+  if (has_property(n, "eta")) {
+    for (const char* name : {"int_ior", "ext_ior"})
+      if (has_property(n, name))
+        fail(find_property(n, name)->loc, describe(n),
+             ": give either eta or int_ior/ext_ior, not both");
+    m.param[PPLASTIC_ETA] = textured(n, "eta", glm::dvec3(0.0), true);
+  } else {
+    double int_ior = ior_parameter(n, "int_ior", "polypropylene");
+    double ext_ior = ior_parameter(n, "ext_ior", "air");
+    if (int_ior == ext_ior) fail(n.loc, describe(n), ": int_ior and ext_ior must differ");
+    m.param[PPLASTIC_ETA] = constant_value(glm::dvec3(int_ior / ext_ior));
+  }
+  microfacet_roughness(n, m, PPLASTIC_ALPHA_U, PPLASTIC_ALPHA_V);
+  double d_mean = textured_mean(m.param[PLASTIC_DIFFUSE_REFLECTANCE]);
+  double s_mean = textured_mean(m.param[PLASTIC_SPECULAR_REFLECTANCE]);
+  m.extra = d_mean + s_mean > 0.0 ? float(s_mean / (d_mean + s_mean)) : 0.5f;
   return m;
 }
 

@@ -58,7 +58,7 @@ const Entry TABLE[] = {
     {"bsdf", "normalmap", PluginSupport::Planned, PLUGINS_ISSUE},
     {"bsdf", "bumpmap", PluginSupport::Planned, PLUGINS_ISSUE},
     {"bsdf", "blendbsdf", PluginSupport::Planned, PLUGINS_ISSUE},
-    {"bsdf", "pplastic", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"bsdf", "pplastic", PluginSupport::Supported, ""},
     {"bsdf", "polarizer", PluginSupport::OutOfScope, POLARIZATION},
     {"bsdf", "retarder", PluginSupport::OutOfScope, POLARIZATION},
     {"bsdf", "circular", PluginSupport::OutOfScope, POLARIZATION},

@@ -273,6 +273,39 @@ void add_bsdfs(StatisticalList& list) {
           kOneSided, false);
     }
   }
+  if (bsdf_type_available(BSDF_PPLASTIC)) {
+    // The lobe mixture at several roughnesses, anisotropic, with either reflectance black
+    // (one lobe alone is sampled) and at a second eta.
+    struct Setting {
+      std::string name;
+      float alpha_u, alpha_v, eta;
+      vec3 diffuse, specular;
+    };
+    const Setting settings[] = {
+        {"a=0.05", 0.05f, 0.05f, 1.49f, plastic_diffuse, vec3(1.0f)},
+        {"a=0.3", 0.3f, 0.3f, 1.49f, plastic_diffuse, vec3(1.0f)},
+        {"a=1", 1.0f, 1.0f, 1.49f, plastic_diffuse, vec3(1.0f)},
+        {"a=0.05,0.6", 0.05f, 0.6f, 1.49f, plastic_diffuse, vec3(1.0f)},
+        {"a=0.3 eta=1.2", 0.3f, 0.3f, 1.2f, plastic_diffuse, vec3(0.5f)},
+        {"a=0.3 diffuse=0", 0.3f, 0.3f, 1.49f, vec3(0.0f), vec3(1.0f)},
+        {"a=0.3 specular=0", 0.3f, 0.3f, 1.49f, plastic_diffuse, vec3(0.0f)},
+    };
+    for (Distribution d : distributions) {
+      for (const Setting& s : settings) {
+        for (bool visible : {true, false}) {
+          // Sampling all normals is checked on the plain isotropic settings only.
+          if (!visible && (s.alpha_u != s.alpha_v || s.diffuse != plastic_diffuse)) continue;
+          list.bsdf(
+              std::string("pplastic_") + name_of(d),
+              std::string("pplastic ") + name_of(d) + " " + s.name + (visible ? " vis" : " all"),
+              [=] {
+                return pplastic(d, s.alpha_u, s.alpha_v, visible, s.eta, s.diffuse, s.specular);
+              },
+              kOneSided, false);
+        }
+      }
+    }
+  }
   if (bsdf_available(principled(PrincipledParameters{}))) {
     // A grid over the weights: each lobe alone, pairs, and everything at once.
     struct Setting {
@@ -415,6 +448,22 @@ std::vector<ExtremesCase> build_extremes() {
               cases.push_back({std::string("roughplastic_") + name_of(d), name,
                                [=] { return roughplastic(d, a, true, eta, diff, r, nonlinear); }});
             }
+          }
+        }
+      }
+    }
+  }
+  // pplastic: roughness, eta and both reflectances over the extremes.
+  for (float eta : kEtas) {
+    if (eta == 1.0f) continue;  // refused by the loader: int_ior and ext_ior must differ
+    for (vec3 diff : kReflectances) {
+      for (vec3 r : kReflectances) {
+        for (Distribution d : {Distribution::ggx, Distribution::beckmann}) {
+          for (float a : kAlphas) {
+            add(std::string("pplastic_") + name_of(d),
+                "pplastic " + std::string(name_of(d)) + " a=" + fmt(a) + " eta=" + fmt(eta) +
+                    " d=" + fmt(diff.x) + " s=" + fmt(r.x),
+                pplastic(d, a, a, true, eta, diff, r));
           }
         }
       }

@@ -222,6 +222,42 @@ TEST(PluginDefaults, Plastics) {
             "equal");
 }
 
+// Mitsuba 3.8 pplastic.cpp: eta = int_ior / ext_ior unless `eta` is given, never both.
+TEST(PluginDefaults, PolarizedPlastic) {
+  const std::string p = bsdf("pplastic");
+  check({"pplastic int_ior",
+         p,
+         {str("int_ior", "polypropylene"), flt("int_ior", "1.49")},
+         str("int_ior", "bk7")});
+  check({"pplastic ext_ior",
+         p,
+         {str("ext_ior", "air"), flt("ext_ior", "1.000277")},
+         flt("ext_ior", "1.2")});
+  check({"pplastic eta", p, {}, flt("eta", "1.7")});
+  check({"pplastic diffuse_reflectance",
+         p,
+         {rgb("diffuse_reflectance", "0.5")},
+         rgb("diffuse_reflectance", "0.4")});
+  check({"pplastic specular_reflectance",
+         p,
+         {flt("specular_reflectance", "1")},
+         flt("specular_reflectance", "0.8")});
+  check_microfacet("pplastic");
+  check({"pplastic alpha_u and alpha_v",
+         p,
+         {flt("alpha_u", "0.1") + flt("alpha_v", "0.1")},
+         flt("alpha_u", "0.1") + flt("alpha_v", "0.3")});
+  expect_error("<bsdf type=\"pplastic\">" + flt("eta", "1.5") + flt("int_ior", "1.5") + "</bsdf>",
+               "give either eta or int_ior/ext_ior, not both");
+  expect_error("<bsdf type=\"pplastic\">" + flt("eta", "1.5") + flt("ext_ior", "1.1") + "</bsdf>",
+               "give either eta or int_ior/ext_ior, not both");
+  expect_error(
+      "<bsdf type=\"pplastic\">" + flt("int_ior", "1.3") + flt("ext_ior", "1.3") + "</bsdf>",
+      "int_ior and ext_ior must differ");
+  expect_error("<bsdf type=\"pplastic\">" + flt("alpha_v", "0.1") + "</bsdf>",
+               "alpha_u and alpha_v must be given together");
+}
+
 TEST(PluginDefaults, Principled) {
   const std::string p = bsdf("principled");
   check({"base_color",

@@ -136,6 +136,17 @@ Material roughplastic(Distribution d, float alpha, bool sample_visible, float et
   return m;
 }
 
+Material pplastic(Distribution d, float alpha_u, float alpha_v, bool sample_visible, float eta,
+                  vec3 diffuse_reflectance, vec3 specular_reflectance) {
+  Material m = plastic(eta, diffuse_reflectance, specular_reflectance, false);
+  m.type = BSDF_PPLASTIC;
+  m.flags = microfacet_flags(d, sample_visible);
+  m.param[PPLASTIC_ALPHA_U] = constant(vec3(alpha_u));
+  m.param[PPLASTIC_ALPHA_V] = constant(vec3(alpha_v));
+  m.param[PPLASTIC_ETA] = constant(vec3(eta));
+  return m;
+}
+
 Material principled(const PrincipledParameters& p) {
   Material m = blank(BSDF_PRINCIPLED);
   // The loader's eta <-> specular correspondence (Mitsuba principled.cpp):

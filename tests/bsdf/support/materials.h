@@ -24,6 +24,8 @@ Material thindielectric(float eta, vec3 specular_reflectance, vec3 specular_tran
 Material plastic(float eta, vec3 diffuse_reflectance, vec3 specular_reflectance, bool nonlinear);
 Material roughplastic(Distribution d, float alpha, bool sample_visible, float eta,
                       vec3 diffuse_reflectance, vec3 specular_reflectance, bool nonlinear);
+Material pplastic(Distribution d, float alpha_u, float alpha_v, bool sample_visible, float eta,
+                  vec3 diffuse_reflectance, vec3 specular_reflectance);
 
 // Every `principled` parameter (Mitsuba names); the sampling rates are Mitsuba's defaults
 // unless set. `eta` and `specular` are tied as the loader ties them.
