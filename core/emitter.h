@@ -10,6 +10,7 @@
 #include "core/emitters/directional.h"
 #include "core/emitters/envmap.h"
 #include "core/emitters/point.h"
+#include "core/emitters/spot.h"
 #include "core/interaction.h"
 #include "core/rng.h"
 
@@ -26,6 +27,8 @@ INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
     s = sample_area_emitter(e, ref_p, rng);
   } else if (TR_HAS_EMITTER(EMITTER_POINT) && e.type == EMITTER_POINT) {
     s = sample_point_emitter(e, ref_p);
+  } else if (TR_HAS_EMITTER(EMITTER_SPOT) && e.type == EMITTER_SPOT) {
+    s = sample_spot_emitter(e, ref_p);
   } else if (TR_HAS_EMITTER(EMITTER_DIRECTIONAL) && e.type == EMITTER_DIRECTIONAL) {
     s = sample_directional_emitter(e, ref_p);
   } else if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) {

@@ -118,20 +118,22 @@ const uint EMITTER_POINT = 1u;
 const uint EMITTER_DIRECTIONAL = 2u;
 const uint EMITTER_CONSTANT = 3u;
 const uint EMITTER_ENVMAP = 4u;
+const uint EMITTER_SPOT = 5u;
 
 struct Emitter {
   uint type;          // EMITTER_*
   uint shape;         // area: the emitting shape
   uint texture;       // envmap: its bitmap texture
   uint alias_offset;  // area meshes: per-triangle alias table; envmap: per-texel alias table
-  vec3 radiance;      // area/constant: radiance; point: intensity; directional: irradiance;
+  vec3 radiance;      // area/constant: radiance; point, spot: intensity; directional: irradiance;
   float scale;        // envmap: `scale`
-  vec3 position;      // point: position
+  vec3 position;      // point, spot: position
   uint alias_count;
-  vec3 direction;  // directional: unit direction of travel
-  float pad0;
+  vec3 direction;    // directional: unit direction of travel
+  float tan_cutoff;  // spot: tan(cutoff_angle), the texture's uv scale
   vec4 to_world[3];  // envmap: rotation local->world
-  vec4 to_local[3];  // envmap: rotation world->local
+  vec4 to_local[3];  // envmap, spot: world->local
+  vec4 cone;         // spot: cos(cutoff), cos(beam_width), cutoff, 1 / (cutoff - beam_width)
 };
 
 // Walker/Vose alias table entry (Vose 1991): pick bin i = floor(u * n); keep it with

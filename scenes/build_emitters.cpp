@@ -61,6 +61,8 @@ void SceneBuilder::add_emitter(Node& n) {
     glm::dvec3 position = take_vector(n, "position", glm::dvec3(to_world[3]));
     e.position = vec3(position);
     e.radiance = vec3(emitter_color(n, "intensity"));
+  } else if (n.type == "spot") {
+    e = build_spot(n);
   } else if (n.type == "directional") {
     e = blank_emitter(EMITTER_DIRECTIONAL);
     if (has_property(n, "direction") && has_property(n, "to_world"))
@@ -146,11 +148,42 @@ void SceneBuilder::add_emitter(Node& n) {
     fail(n.loc, "an \"area\" emitter must be nested inside a <shape>");
   } else {
     fail(n.loc, "unknown emitter type \"", n.type,
-         "\" (supported: area, point, directional, constant, envmap)");
+         "\" (supported: area, point, spot, directional, constant, envmap)");
   }
   pe.sampling_weight = take_sampling_weight(n);
   check_consumed(n);
   emitters_.push_back(pe);
+}
+
+// Mitsuba 3.8 `spot` (src/emitters/spot.cpp), parameter by parameter:
+//   intensity     emitted intensity (W/sr), a colour or spectrum, not a texture; 1
+//   texture       optional spatially varying texture over the cone (a bitmap or checkerboard)
+//   cutoff_angle  degrees, 20;  beam_width  degrees, 3/4 of cutoff_angle
+//   to_world      the light at its origin, shining along its +z
+// Mitsuba checks neither angle (its assertion beam_width <= cutoff_angle is compiled out of
+// release builds): every pair renders as Mitsuba renders it (core/emitters/spot.h).
+Emitter SceneBuilder::build_spot(Node& n) {
+  Emitter e = blank_emitter(EMITTER_SPOT);
+  e.radiance = vec3(emitter_color(n, "intensity"));
+  if (has_property(n, "texture")) {
+    TexturedValue t = textured(n, "texture", glm::dvec3(1.0), false);
+    if (t.texture == NO_INDEX)
+      fail(find_property(n, "texture")->loc, describe(n),
+           ": 'texture' must be spatially varying (a bitmap or checkerboard), as in Mitsuba");
+    e.texture = t.texture;
+  }
+  double cutoff_deg = take_float(n, "cutoff_angle", 20.0);
+  double beam_deg = take_float(n, "beam_width", cutoff_deg * 3.0 / 4.0);
+  double cutoff = glm::radians(cutoff_deg), beam = glm::radians(beam_deg);
+  e.cone = vec4(float(std::cos(cutoff)), float(std::cos(beam)), float(cutoff),
+                float(1.0 / (cutoff - beam)));
+  e.tan_cutoff = float(std::tan(cutoff));
+  glm::dmat4 to_world = take_transform(n, "to_world");
+  if (glm::determinant(glm::dmat3(to_world)) == 0.0)
+    fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
+  e.position = vec3(glm::dvec3(to_world[3]));
+  store_rows(glm::inverse(to_world), e.to_local);
+  return e;
 }
 
 double SceneBuilder::take_sampling_weight(Node& emitter) {

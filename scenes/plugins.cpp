@@ -78,7 +78,7 @@ const Entry TABLE[] = {
     {"emitter", "directional", PluginSupport::Supported, ""},
     {"emitter", "constant", PluginSupport::Supported, ""},
     {"emitter", "envmap", PluginSupport::Supported, ""},
-    {"emitter", "spot", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"emitter", "spot", PluginSupport::Supported, ""},
     {"emitter", "projector", PluginSupport::Planned, PLUGINS_ISSUE},
     {"emitter", "directionalarea", PluginSupport::Unimplemented, NOT_YET},
     {"emitter", "sunsky", PluginSupport::Unimplemented, NOT_YET},

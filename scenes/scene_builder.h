@@ -97,6 +97,7 @@ class SceneBuilder {
   // Each record of SceneBuffers::emitters with its `sampling_weight` and its XML location.
   std::vector<std::pair<double, Location>> emitter_weights_;
   void add_emitter(Node& emitter);
+  Emitter build_spot(Node& emitter);
   void finalize_emitters();
   // Mitsuba 3's per-emitter `sampling_weight` (src/render/emitter.cpp): finite, >= 0, default 1.
   static double take_sampling_weight(Node& emitter);
