@@ -10,6 +10,7 @@
 #include "core/emitters/directional.h"
 #include "core/emitters/envmap.h"
 #include "core/emitters/point.h"
+#include "core/emitters/projector.h"
 #include "core/emitters/spot.h"
 #include "core/interaction.h"
 #include "core/rng.h"
@@ -29,6 +30,8 @@ INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
     s = sample_point_emitter(e, ref_p);
   } else if (TR_HAS_EMITTER(EMITTER_SPOT) && e.type == EMITTER_SPOT) {
     s = sample_spot_emitter(e, ref_p);
+  } else if (TR_HAS_EMITTER(EMITTER_PROJECTOR) && e.type == EMITTER_PROJECTOR) {
+    s = sample_projector_emitter(e, ref_p);
   } else if (TR_HAS_EMITTER(EMITTER_DIRECTIONAL) && e.type == EMITTER_DIRECTIONAL) {
     s = sample_directional_emitter(e, ref_p);
   } else if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) {

@@ -119,21 +119,24 @@ const uint EMITTER_DIRECTIONAL = 2u;
 const uint EMITTER_CONSTANT = 3u;
 const uint EMITTER_ENVMAP = 4u;
 const uint EMITTER_SPOT = 5u;
+const uint EMITTER_PROJECTOR = 6u;
 
 struct Emitter {
   uint type;          // EMITTER_*
   uint shape;         // area: the emitting shape
-  uint texture;       // envmap: its bitmap texture
+  uint texture;       // envmap: its bitmap; spot, projector: their texture, or NO_INDEX
   uint alias_offset;  // area meshes: per-triangle alias table; envmap: per-texel alias table
-  vec3 radiance;      // area/constant: radiance; point, spot: intensity; directional: irradiance;
-  float scale;        // envmap: `scale`
-  vec3 position;      // point, spot: position
+  vec3 radiance;      // area, constant: radiance; point, spot: intensity; directional:
+                      // irradiance; projector: irradiance when untextured
+  float scale;        // envmap, projector: `scale`
+  vec3 position;      // point, spot, projector: position
   uint alias_count;
-  vec3 direction;    // directional: unit direction of travel
+  vec3 direction;    // directional: unit direction of travel; projector: to_world (0, 0, 1)
   float tan_cutoff;  // spot: tan(cutoff_angle), the texture's uv scale
   vec4 to_world[3];  // envmap: rotation local->world
-  vec4 to_local[3];  // envmap, spot: world->local
-  vec4 cone;         // spot: cos(cutoff), cos(beam_width), cutoff, 1 / (cutoff - beam_width)
+  vec4 to_local[3];  // envmap, spot, projector: world->local
+  vec4 cone;         // spot: cos(cutoff), cos(beam_width), cutoff, 1 / (cutoff - beam_width);
+                     // projector: uv scales cot(fov_x / 2) / 2 and aspect cot(fov_x / 2) / 2
 };
 
 // Walker/Vose alias table entry (Vose 1991): pick bin i = floor(u * n); keep it with

@@ -63,6 +63,8 @@ void SceneBuilder::add_emitter(Node& n) {
     e.radiance = vec3(emitter_color(n, "intensity"));
   } else if (n.type == "spot") {
     e = build_spot(n);
+  } else if (n.type == "projector") {
+    e = build_projector(n);
   } else if (n.type == "directional") {
     e = blank_emitter(EMITTER_DIRECTIONAL);
     if (has_property(n, "direction") && has_property(n, "to_world"))
@@ -148,7 +150,7 @@ void SceneBuilder::add_emitter(Node& n) {
     fail(n.loc, "an \"area\" emitter must be nested inside a <shape>");
   } else {
     fail(n.loc, "unknown emitter type \"", n.type,
-         "\" (supported: area, point, spot, directional, constant, envmap)");
+         "\" (supported: area, point, spot, projector, directional, constant, envmap)");
   }
   pe.sampling_weight = take_sampling_weight(n);
   check_consumed(n);
@@ -182,6 +184,40 @@ Emitter SceneBuilder::build_spot(Node& n) {
   if (glm::determinant(glm::dmat3(to_world)) == 0.0)
     fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
   e.position = vec3(glm::dvec3(to_world[3]));
+  store_rows(glm::inverse(to_world), e.to_local);
+  return e;
+}
+
+// Mitsuba 3.8 `projector` (src/emitters/projector.cpp), parameter by parameter:
+//   irradiance    a colour or texture (its resolution sets the aspect; 1 for a non-bitmap); 1
+//   scale         irradiance multiplier, 1
+//   fov, fov_axis or focal_length   as the perspective sensor's, over the texture's aspect
+//   to_world      the projector at its origin, looking along its +z
+Emitter SceneBuilder::build_projector(Node& n) {
+  Emitter e = blank_emitter(EMITTER_PROJECTOR);
+  Property* p = find_property(n, "irradiance");
+  TexturedValue irradiance = textured(n, "irradiance", glm::dvec3(1.0), false);
+  if (irradiance.texture == NO_INDEX && glm::any(glm::lessThan(irradiance.value, vec3(0.0f))))
+    fail(p->loc, describe(n),
+         ": a negative 'irradiance' is not supported by twinray (Mitsuba accepts negative "
+         "emission)");
+  e.radiance = irradiance.value;
+  e.texture = irradiance.texture;
+  double aspect = 1.0;
+  if (e.texture != NO_INDEX && b_.textures[e.texture].type == TEXTURE_BITMAP)
+    aspect = double(b_.textures[e.texture].width) / b_.textures[e.texture].height;
+  double scale = take_float(n, "scale", 1.0);
+  if (!(scale >= 0.0))
+    fail(find_property(n, "scale")->loc, describe(n),
+         ": a negative 'scale' is not supported by twinray (Mitsuba accepts negative emission)");
+  e.scale = float(scale);
+  double half_cot = 0.5 / std::tan(0.5 * glm::radians(horizontal_fov(n, aspect)));
+  e.cone = vec4(float(half_cot), float(aspect * half_cot), 0.0f, 0.0f);
+  glm::dmat4 to_world = take_transform(n, "to_world");
+  if (glm::determinant(glm::dmat3(to_world)) == 0.0)
+    fail(find_property(n, "to_world")->loc, describe(n), ": to_world is singular");
+  e.position = vec3(glm::dvec3(to_world[3]));
+  e.direction = vec3(glm::dvec3(to_world * glm::dvec4(0.0, 0.0, 1.0, 0.0)));
   store_rows(glm::inverse(to_world), e.to_local);
   return e;
 }

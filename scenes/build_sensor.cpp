@@ -25,46 +25,6 @@ Node empty_node(const std::string& tag, const std::string& type, const Location&
   return n;
 }
 
-// Mitsuba's parse_fov (src/render/sensor.cpp): the horizontal field of view in degrees.
-double horizontal_fov(Node& s, double aspect) {
-  if (has_property(s, "fov") && has_property(s, "focal_length"))
-    fail(find_property(s, "fov")->loc, describe(s), ": give either 'fov' or 'focal_length'");
-  double fov;
-  std::string axis;
-  if (has_property(s, "fov")) {
-    fov = take_float(s, "fov");
-    axis = to_lower(take_string(s, "fov_axis", "x"));
-    if (axis == "smaller") axis = aspect > 1 ? "y" : "x";
-    if (axis == "larger") axis = aspect > 1 ? "x" : "y";
-  } else {
-    // Default: a 50 mm lens on a 36 x 24 mm film, along the diagonal.
-    std::string f = take_string(s, "focal_length", "50mm");
-    Location loc = has_property(s, "focal_length") ? find_property(s, "focal_length")->loc : s.loc;
-    if (f.size() > 2 && f.compare(f.size() - 2, 2, "mm") == 0) f = f.substr(0, f.size() - 2);
-    double value = parse_double(f, loc, "focal_length");
-    if (!(value > 0.0)) fail(loc, "focal_length must be positive");
-    fov = 2.0 * std::atan(std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / (2.0 * value)) * 180.0 / PI_D;
-    axis = "diagonal";
-  }
-  auto rad = [](double deg) { return deg * PI_D / 180.0; };
-  double result;
-  if (axis == "x") {
-    result = fov;
-  } else if (axis == "y") {
-    result = 2.0 * std::atan(std::tan(0.5 * rad(fov)) * aspect) * 180.0 / PI_D;
-  } else if (axis == "diagonal") {
-    double diagonal = 2.0 * std::tan(0.5 * rad(fov));
-    double width = diagonal / std::sqrt(1.0 + 1.0 / (aspect * aspect));
-    result = 2.0 * std::atan(width * 0.5) * 180.0 / PI_D;
-  } else {
-    fail(find_property(s, "fov_axis")->loc, describe(s), ": fov_axis \"", axis,
-         "\" must be x, y, diagonal, smaller or larger");
-  }
-  if (!(result > 0.0 && result < 180.0))
-    fail(s.loc, describe(s), ": the field of view must be in (0, 180) degrees");
-  return result;
-}
-
 // The film's reconstruction filter into Camera.rfilter, filter_radius and Mitsuba's table
 // (src/rfilters/*.cpp for the parameters and radii; core/rfilter.h for the table).
 void reconstruction_filter(Node& rf, Camera& cam) {
@@ -144,6 +104,45 @@ Location location_of(Node& n, const std::string& name) {
 }
 
 }  // namespace
+
+double horizontal_fov(Node& s, double aspect) {
+  if (has_property(s, "fov") && has_property(s, "focal_length"))
+    fail(find_property(s, "fov")->loc, describe(s), ": give either 'fov' or 'focal_length'");
+  double fov;
+  std::string axis;
+  if (has_property(s, "fov")) {
+    fov = take_float(s, "fov");
+    axis = to_lower(take_string(s, "fov_axis", "x"));
+    if (axis == "smaller") axis = aspect > 1 ? "y" : "x";
+    if (axis == "larger") axis = aspect > 1 ? "x" : "y";
+  } else {
+    // Default: a 50 mm lens on a 36 x 24 mm film, along the diagonal.
+    std::string f = take_string(s, "focal_length", "50mm");
+    Location loc = has_property(s, "focal_length") ? find_property(s, "focal_length")->loc : s.loc;
+    if (f.size() > 2 && f.compare(f.size() - 2, 2, "mm") == 0) f = f.substr(0, f.size() - 2);
+    double value = parse_double(f, loc, "focal_length");
+    if (!(value > 0.0)) fail(loc, "focal_length must be positive");
+    fov = 2.0 * std::atan(std::sqrt(36.0 * 36.0 + 24.0 * 24.0) / (2.0 * value)) * 180.0 / PI_D;
+    axis = "diagonal";
+  }
+  auto rad = [](double deg) { return deg * PI_D / 180.0; };
+  double result;
+  if (axis == "x") {
+    result = fov;
+  } else if (axis == "y") {
+    result = 2.0 * std::atan(std::tan(0.5 * rad(fov)) * aspect) * 180.0 / PI_D;
+  } else if (axis == "diagonal") {
+    double diagonal = 2.0 * std::tan(0.5 * rad(fov));
+    double width = diagonal / std::sqrt(1.0 + 1.0 / (aspect * aspect));
+    result = 2.0 * std::atan(width * 0.5) * 180.0 / PI_D;
+  } else {
+    fail(find_property(s, "fov_axis")->loc, describe(s), ": fov_axis \"", axis,
+         "\" must be x, y, diagonal, smaller or larger");
+  }
+  if (!(result > 0.0 && result < 180.0))
+    fail(s.loc, describe(s), ": the field of view must be in (0, 180) degrees");
+  return result;
+}
 
 void SceneBuilder::add_sensor(Node& s) {
   if (s.type != "perspective" && s.type != "thinlens" && s.type != "orthographic")

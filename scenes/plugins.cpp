@@ -79,7 +79,7 @@ const Entry TABLE[] = {
     {"emitter", "constant", PluginSupport::Supported, ""},
     {"emitter", "envmap", PluginSupport::Supported, ""},
     {"emitter", "spot", PluginSupport::Supported, ""},
-    {"emitter", "projector", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"emitter", "projector", PluginSupport::Supported, ""},
     {"emitter", "directionalarea", PluginSupport::Unimplemented, NOT_YET},
     {"emitter", "sunsky", PluginSupport::Unimplemented, NOT_YET},
     {"emitter", "timed_sunsky", PluginSupport::Unimplemented, NOT_YET},

@@ -98,6 +98,7 @@ class SceneBuilder {
   std::vector<std::pair<double, Location>> emitter_weights_;
   void add_emitter(Node& emitter);
   Emitter build_spot(Node& emitter);
+  Emitter build_projector(Node& emitter);
   void finalize_emitters();
   // Mitsuba 3's per-emitter `sampling_weight` (src/render/emitter.cpp): finite, >= 0, default 1.
   static double take_sampling_weight(Node& emitter);
@@ -109,5 +110,10 @@ class SceneBuilder {
 
 // Row-major 3x4 rows (core/scene_types.h) of an affine transform.
 void store_rows(const glm::dmat4& m, vec4 rows[3]);
+
+// Mitsuba's parse_fov (src/render/sensor.cpp): the horizontal field of view in degrees of a
+// sensor or projector whose image has this aspect (width / height), from `fov` + `fov_axis`
+// or `focal_length`.
+double horizontal_fov(Node& s, double aspect);
 
 }  // namespace tr

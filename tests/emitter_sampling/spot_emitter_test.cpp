@@ -9,42 +9,23 @@
 //    the cutoff or behind the light, under a rotated and translated to_world.
 //  - The texture: the lookup direction's uv, (1/2, 1/2) on the axis and the cutoff circle
 //    inscribed in the unit square, read from a bitmap whose texels say where they are.
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
-#include "core/emitter.h"
 #include "cpu_backend/bound_scene.h"
-#include "scenes/load_scene.h"
+#include "delta_emitters.h"
 
 namespace tr {
 namespace {
 
 const double kPi = 3.14159265358979323846;
 
-Scene load_body(const std::string& name, const std::string& body) {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / "twinray_spot_tests";
-  std::filesystem::create_directories(dir);
-  std::filesystem::path file = dir / (name + ".xml");
-  std::ofstream(file) << "<scene version=\"3.0.0\"><sensor type=\"perspective\"/>" << body
-                      << "</scene>\n";
-  return load_scene(file.string(), LoadOptions());
-}
-
 std::string spot(const std::string& params) {
   return "<emitter type=\"spot\"><rgb name=\"intensity\" value=\"2, 3, 4\"/>" + params +
          "<transform name=\"to_world\"><rotate x=\"1\" y=\"2\" z=\"0.5\" angle=\"70\"/>"
          "<translate x=\"0.3\" y=\"-1\" z=\"2\"/></transform></emitter>";
-}
-
-// The scene's one emitter sampled from p (the emitter choice draws from rng; there is one).
-EmitterSample sample_towards(vec3 p) {
-  Rng rng = rng_init(0u, 0u, 0u);
-  return sample_emitter(p, rng);
 }
 
 // The light's axis and a unit vector perpendicular to it, in world space.
@@ -76,11 +57,11 @@ double falloff_power(double cutoff_deg, double beam_deg) {
 
 TEST(SpotEmitter, TotalPowerIsTheClosedFormOfTheFalloff) {
   for (auto [cutoff, beam] : {std::pair{20.0, 15.0}, {35.0, 5.0}, {60.0, 59.0}, {89.0, 10.0}}) {
-    Scene scene =
-        load_body("power", spot("<float name=\"cutoff_angle\" value=\"" + std::to_string(cutoff) +
-                                "\"/><float name=\"beam_width\" "
-                                "value=\"" +
-                                std::to_string(beam) + "\"/>"));
+    Scene scene = load_emitter_scene(
+        "power", spot("<float name=\"cutoff_angle\" value=\"" + std::to_string(cutoff) +
+                      "\"/><float name=\"beam_width\" "
+                      "value=\"" +
+                      std::to_string(beam) + "\"/>"));
     ScopedSceneBinding bound(scene.buffers);
     Axes a = axes_of(scene.buffers.emitters[0]);
     // Midpoint rule in theta (the profile's kinks at b and c fall on cell edges' neighbours,
@@ -100,8 +81,8 @@ TEST(SpotEmitter, TotalPowerIsTheClosedFormOfTheFalloff) {
 }
 
 TEST(SpotEmitter, ProfileInsideTheBeamOnTheRampAndPastTheCutoff) {
-  Scene scene = load_body("profile", spot("<float name=\"cutoff_angle\" value=\"30\"/>"
-                                          "<float name=\"beam_width\" value=\"10\"/>"));
+  Scene scene = load_emitter_scene("profile", spot("<float name=\"cutoff_angle\" value=\"30\"/>"
+                                                   "<float name=\"beam_width\" value=\"10\"/>"));
   ScopedSceneBinding bound(scene.buffers);
   Axes a = axes_of(scene.buffers.emitters[0]);
   const double deg = kPi / 180.0;
@@ -117,14 +98,14 @@ TEST(SpotEmitter, ProfileInsideTheBeamOnTheRampAndPastTheCutoff) {
 }
 
 TEST(SpotEmitter, BeamWidthDefaultsToThreeQuartersOfTheCutoff) {
-  Scene absent = load_body("default", spot("<float name=\"cutoff_angle\" value=\"40\"/>"));
-  Scene given = load_body("given", spot("<float name=\"cutoff_angle\" value=\"40\"/>"
-                                        "<float name=\"beam_width\" value=\"30\"/>"));
+  Scene absent = load_emitter_scene("default", spot("<float name=\"cutoff_angle\" value=\"40\"/>"));
+  Scene given = load_emitter_scene("given", spot("<float name=\"cutoff_angle\" value=\"40\"/>"
+                                                 "<float name=\"beam_width\" value=\"30\"/>"));
   const Emitter &x = absent.buffers.emitters[0], &y = given.buffers.emitters[0];
   EXPECT_EQ(x.cone.x, y.cone.x);
   EXPECT_EQ(x.cone.y, y.cone.y);
   EXPECT_EQ(x.cone.w, y.cone.w);
-  Scene defaults = load_body("defaults", spot(""));
+  Scene defaults = load_emitter_scene("defaults", spot(""));
   EXPECT_FLOAT_EQ(defaults.buffers.emitters[0].cone.z, float(20.0 * kPi / 180.0));
   EXPECT_FLOAT_EQ(defaults.buffers.emitters[0].cone.y, float(std::cos(15.0 * kPi / 180.0)));
 }
@@ -132,22 +113,8 @@ TEST(SpotEmitter, BeamWidthDefaultsToThreeQuartersOfTheCutoff) {
 // A 3x3 float EXR whose texel (i, j) holds (i, j, 1): the intensity says which texel the
 // direction read (nearest filtering; row 0 at the top, as in Mitsuba's bitmaps).
 TEST(SpotEmitter, TextureCoordinatesInscribeTheCutoffCircleInTheUnitSquare) {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / "twinray_spot_tests";
-  std::filesystem::create_directories(dir);
-  std::string image = (dir / "where.exr").string();
-  float texels[3 * 3 * 3];
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      texels[(j * 3 + i) * 3 + 0] = float(i);
-      texels[(j * 3 + i) * 3 + 1] = float(j);
-      texels[(j * 3 + i) * 3 + 2] = 1.0f;
-    }
-  auto out = OIIO::ImageOutput::create(image);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(image, OIIO::ImageSpec(3, 3, 3, OIIO::TypeDesc::FLOAT)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, texels));
-  out->close();
-  Scene scene = load_body(
+  std::string image = write_texel_positions("spot_texels", 3, 3);
+  Scene scene = load_emitter_scene(
       "texture",
       "<emitter type=\"spot\"><float name=\"cutoff_angle\" value=\"40\"/><float "
       "name=\"beam_width\" value=\"40\"/>"
@@ -177,7 +144,7 @@ TEST(SpotEmitter, TextureCoordinatesInscribeTheCutoffCircleInTheUnitSquare) {
 TEST(SpotEmitter, RefusesAConstantTextureAndATexturedIntensity) {
   auto error_of = [](const std::string& body) {
     try {
-      load_body("refused", body);
+      load_emitter_scene("refused", body);
     } catch (const std::exception& e) {
       return std::string(e.what());
     }
