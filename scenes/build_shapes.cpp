@@ -94,7 +94,7 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   r.flags = 0u;
   r.emitter = NO_INDEX;
   r.first_index = r.triangle_count = r.first_vertex = r.vertex_count = 0u;
-  r.pad0 = r.pad1 = r.pad2 = 0u;
+  r.scene_index = r.pad1 = r.pad2 = 0u;
   set_transforms(r, glm::dmat4(1.0));
 
   glm::dmat4 to_world = take_transform(n, "to_world");
@@ -292,6 +292,7 @@ void SceneBuilder::finalize_shapes() {
     store_rows(glm::inverse(pi.to_world), inst.to_object);
     inst.first_shape = g.first_shape;
     inst.shape_count = uint(g.shapes.size());
+    inst.scene_index = pi.scene_index;
     b_.instances.push_back(inst);
   }
 }

@@ -38,6 +38,7 @@ Scene SceneBuilder::build() {
   b_.globals.environment = NO_INDEX;
   Node& root = *parsed_.root;
   bool have_sensor = false, have_integrator = false;
+  uint scene_shape_count = 0;
   std::map<const Node*, int> holders;
   count_holders(root, holders);
   for (Property& p : root.props) {
@@ -54,12 +55,16 @@ Scene SceneBuilder::build() {
       continue;
     }
     if (o.tag == "shape") {
-      if (o.type == "shapegroup")
+      // Mitsuba's Scene::shapes(): top-level shapes and instances in document order.
+      if (o.type == "shapegroup") {
         add_shapegroup(o);
-      else if (o.type == "instance")
+      } else if (o.type == "instance") {
         add_instance(o);
-      else
+        instances_.back().scene_index = scene_shape_count++;
+      } else {
         add_shape(o, top_shapes_, false);
+        top_shapes_.back().record.scene_index = scene_shape_count++;
+      }
     } else if (o.tag == "bsdf") {
       material(o);
     } else if (o.tag == "texture") {

@@ -76,6 +76,7 @@ class SceneBuilder {
   struct PendingInstance {
     uint group;
     glm::dmat4 to_world;
+    uint scene_index = 0;
   };
   std::vector<PendingInstance> instances_;
   // The object-space mesh of an obj, ply or serialized shape (`filename` and the parameters
