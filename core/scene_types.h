@@ -95,9 +95,10 @@ struct Shape {
   vec4 to_world[3];   // analytic shapes: object->world (mesh vertices are pre-transformed)
   vec4 to_object[3];  // analytic shapes: world->object
   float area;         // world-space surface area
-  uint scene_index;   // position among the scene's top-level shapes and instances (Mitsuba's
-                      // Scene::shapes() order: document order, shapegroups not counted)
-  uint pad1;
+  uint scene_index;   // position in Mitsuba's Scene::shapes() (scenes/build_shapes.cpp,
+                      // number_shapes_as_mitsuba)
+  uint prim_offset;   // Mitsuba's prim_index of triangle 0 (meshes merged into one), or
+                      // NO_INDEX: one primitive (sphere, disk, cylinder)
   uint pad2;
 };
 

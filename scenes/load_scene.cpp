@@ -38,7 +38,6 @@ Scene SceneBuilder::build() {
   b_.globals.environment = NO_INDEX;
   Node& root = *parsed_.root;
   bool have_sensor = false, have_integrator = false;
-  uint scene_shape_count = 0;
   std::map<const Node*, int> holders;
   count_holders(root, holders);
   for (Property& p : root.props) {
@@ -55,15 +54,14 @@ Scene SceneBuilder::build() {
       continue;
     }
     if (o.tag == "shape") {
-      // Mitsuba's Scene::shapes(): top-level shapes and instances in document order.
       if (o.type == "shapegroup") {
         add_shapegroup(o);
       } else if (o.type == "instance") {
         add_instance(o);
-        instances_.back().scene_index = scene_shape_count++;
+        top_level_order_.push_back({true, instances_.size() - 1});
       } else {
         add_shape(o, top_shapes_, false);
-        top_shapes_.back().record.scene_index = scene_shape_count++;
+        top_level_order_.push_back({false, top_shapes_.size() - 1});
       }
     } else if (o.tag == "bsdf") {
       material(o);
@@ -93,6 +91,7 @@ Scene SceneBuilder::build() {
     add_integrator(path);
   }
 
+  number_shapes_as_mitsuba();
   finalize_shapes();
   finalize_emitters();
   b_.globals.instance_count = uint(b_.instances.size());

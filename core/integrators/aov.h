@@ -34,7 +34,7 @@ INLINE AovPoint aov_point(Ray ray, Hit hit) {
 }
 
 // Mitsuba's shape_index: 1 + the position in Scene::shapes() of the shape hit, or of the
-// instance holding it (0 is the background).
+// instance holding it (0 is the background); see Shape.scene_index.
 INLINE float aov_shape_index(Hit hit) {
   if (hit.instance != 0u) return float(scene_instance(hit.instance).scene_index + 1u);
   return float(scene_shape(hit.shape).scene_index + 1u);
@@ -52,9 +52,8 @@ INLINE vec3 aov_value(uint type, AovPoint a) {
   if (TR_HAS_AOV(AOV_GEO_NORMAL) && type == AOV_GEO_NORMAL) return si.ng;
   if (TR_HAS_AOV(AOV_SH_NORMAL) && type == AOV_SH_NORMAL) return si.frame.n;
   if (TR_HAS_AOV(AOV_PRIM_INDEX) && type == AOV_PRIM_INDEX) {
-    // Analytic shapes have one primitive (Mitsuba: prim_index 0).
-    bool mesh = scene_shape(a.hit.shape).type == SHAPE_MESH;
-    return vec3(mesh ? float(a.hit.primitive) : 0.0f, 0.0f, 0.0f);
+    uint offset = scene_shape(a.hit.shape).prim_offset;
+    return vec3(offset == NO_INDEX ? 0.0f : float(offset + a.hit.primitive), 0.0f, 0.0f);
   }
   if (TR_HAS_AOV(AOV_SHAPE_INDEX) && type == AOV_SHAPE_INDEX)
     return vec3(aov_shape_index(a.hit), 0.0f, 0.0f);
