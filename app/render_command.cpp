@@ -165,11 +165,12 @@ int render_command(int argc, char** argv) {
     const Camera& camera = scene.buffers.globals.camera;
     a.budget.spp = a.render.spp ? a.render.spp : scene.spp;
     std::unique_ptr<Renderer> renderer = make_renderer(a.backend, scene, a.render);
-    const RenderIdentity id{build_id(),    scene_digest(scene),     a.backend,
-                            a.render.seed, renderer->granularity(), camera.width,
-                            camera.height};
-    FilmState film =
-        a.resume.empty() ? empty_film(camera.width, camera.height) : read_checkpoint(a.resume, id);
+    RenderIdentity id{build_id(),    scene_digest(scene),     a.backend,
+                      a.render.seed, renderer->granularity(), camera.width,
+                      camera.height};
+    id.aov_count = scene.buffers.globals.integrator.aov_count;
+    FilmState film = a.resume.empty() ? empty_film(camera.width, camera.height, id.aov_count)
+                                      : read_checkpoint(a.resume, id);
     if (film.samples > a.budget.spp)
       throw CheckpointError(a.resume + ": holds " + std::to_string(film.samples) +
                             " spp, more than the " + std::to_string(a.budget.spp) + " asked for");
@@ -190,7 +191,7 @@ int render_command(int argc, char** argv) {
                   {"twinray:version", TWINRAY_VERSION},
                   {"twinray:stopped", stop_reason_name(outcome.stop)},
                   {"twinray:estimated_error", std::to_string(outcome.error)}},
-                 scene.film_half);
+                 scene.film_half, scene.aov_channels);
     print_summary(result, paths, outcome);
     return outcome.stop == StopReason::Interrupted ? kExitInterrupted : kExitOk;
   } catch (...) {

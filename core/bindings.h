@@ -19,6 +19,7 @@
 #define BINDING_INDICES 12
 #define BINDING_ACCUMULATION 13
 #define BINDING_GEOMETRY_SHAPES 14  // gpu_backend/scene_accel.h: TLAS geometry -> shape
-#define BINDING_COUNT 15
+#define BINDING_AOVS 15             // Mitsuba `aov`: per pixel and output variable, one PixelBatch
+#define BINDING_COUNT 16
 
 #endif

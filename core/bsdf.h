@@ -210,6 +210,32 @@ INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   return s;
 }
 
+// Mitsuba's BSDF::eval_diffuse_reflectance (the `aov` integrator's albedo): the diffuse
+// reflectance parameter where a BSDF has one (diffuse.cpp, plastic.cpp, roughplastic.cpp;
+// principled.cpp: base_color), otherwise pi f(wi, n) cos = pi * eval at wo = the normal
+// (src/render/bsdf.cpp). `twosided` mirrors wi to the front (twosided.cpp); `mask` returns the
+// nested BSDF's (mask.cpp), without its opacity.
+INLINE vec3 bsdf_diffuse_reflectance(Material m, vec2 uv, vec3 wi) {
+  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
+    wi.z = abs(wi.z);
+  switch (m.type) {
+    case BSDF_DIFFUSE:
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return eval_textured(m.param[DIFFUSE_REFLECTANCE], uv);
+      break;
+    case BSDF_PLASTIC:
+    case BSDF_ROUGHPLASTIC:
+      if (TR_HAS_BSDF(BSDF_PLASTIC) || TR_HAS_BSDF(BSDF_ROUGHPLASTIC))
+        return eval_textured(m.param[PLASTIC_DIFFUSE_REFLECTANCE], uv);
+      break;
+    case BSDF_PRINCIPLED:
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return eval_textured(m.param[PRINCIPLED_BASE_COLOR], uv);
+      break;
+    default:
+      break;
+  }
+  return PI * bsdf_base_eval(m, uv, wi, vec3(0.0f, 0.0f, 1.0f));
+}
+
 TR_NAMESPACE_END
 
 #endif

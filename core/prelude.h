@@ -65,6 +65,9 @@ TR_NAMESPACE_END
 #ifndef TR_HAS_INTEGRATOR
 #define TR_HAS_INTEGRATOR(type) true
 #endif
+#ifndef TR_HAS_AOV
+#define TR_HAS_AOV(type) true
+#endif
 
 TR_NAMESPACE_BEGIN
 

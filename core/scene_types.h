@@ -96,8 +96,10 @@ struct Shape {
   vec4 to_world[3];   // analytic shapes: object->world (mesh vertices are pre-transformed)
   vec4 to_object[3];  // analytic shapes: world->object
   float area;         // world-space surface area
-  uint pad0;
-  uint pad1;
+  uint scene_index;   // position in Mitsuba's Scene::shapes() (scenes/build_shapes.cpp,
+                      // number_shapes_as_mitsuba)
+  uint prim_offset;   // Mitsuba's prim_index of triangle 0 (meshes merged into one), or
+                      // NO_INDEX: one primitive (sphere, disk, cylinder)
   uint pad2;
 };
 
@@ -108,7 +110,7 @@ struct Instance {
   vec4 to_object[3];
   uint first_shape;
   uint shape_count;
-  uint pad0;
+  uint scene_index;  // as Shape.scene_index, for the instance itself (unused by instance 0)
   uint pad1;
 };
 
@@ -165,6 +167,17 @@ const uint RFILTER_LANCZOS = 5u;
 const uint INTEGRATOR_PATH = 0u;
 const uint INTEGRATOR_DIRECT = 1u;
 
+// Output variables of Mitsuba's `aov` integrator (src/integrators/aov.cpp), at most AOV_MAX.
+const uint AOV_ALBEDO = 0u;
+const uint AOV_DEPTH = 1u;
+const uint AOV_POSITION = 2u;
+const uint AOV_UV = 3u;
+const uint AOV_GEO_NORMAL = 4u;
+const uint AOV_SH_NORMAL = 5u;
+const uint AOV_PRIM_INDEX = 6u;
+const uint AOV_SHAPE_INDEX = 7u;
+const uint AOV_MAX = 16u;
+
 // Positions on the film are in pixels of the full film, origin at its top-left corner.
 struct Camera {
   vec4 to_world[3];  // camera->world; camera looks along +z, +x left, +y up (Mitsuba)
@@ -201,6 +214,11 @@ struct Integrator {
   uint bsdf_samples;     // direct
   uint pad0;
   uint pad1;
+  uint aov_count;  // Mitsuba `aov`: output variables per sample (core/integrators/aov.h)
+  uint pad2;
+  uint pad3;
+  uint pad4;
+  uvec4 aov_types[4];  // AOV_* of output variable i at [i / 4][i % 4]
 };
 
 struct SceneGlobals {

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/integrator.h"
+#include "core/integrators/aov.h"
 #include "cpu_backend/bound_scene.h"
 #include "cpu_backend/embree_scene.h"
 #include "render/film_moments.h"
@@ -30,13 +31,30 @@ struct ThreadCounts {
 
 // Samples [first, first + count) of one pixel, in order, added to its moments in double
 // (render/film_moments.h).
+// With AOVs (core/integrators/aov.h) the camera ray is traced before the integrator runs, and
+// its hit serves the integrator's first step.
 void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count, uint seed,
-                  FilmMoments& m, ThreadCounts& counts) {
+                  FilmMoments& m, FilmMoments* aovs, ThreadCounts& counts) {
+  const Integrator it = scene_globals().integrator;
   for (uint i = first; i < first + count; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
-    while (integrator_alive(s)) {
-      Hit hit = accel.intersect(s.ray);
+    bool camera_hit_pending = false;
+    Hit camera_hit;
+    if (it.aov_count > 0u) {
+      camera_hit = accel.intersect(s.ray);
       ++counts.rays;
+      camera_hit_pending = true;
+      AovPoint a = aov_point(s.ray, camera_hit);
+      for (uint k = 0; k < it.aov_count; ++k) {
+        FilmMoments& am = aovs[k];
+        add_sample(integrator_negative(s) ? am.negative : am.positive,
+                   aov_value(aov_type(it, k), a));
+      }
+    }
+    while (integrator_alive(s)) {
+      Hit hit = camera_hit_pending ? camera_hit : accel.intersect(s.ray);
+      if (!camera_hit_pending) ++counts.rays;
+      camera_hit_pending = false;
       ShadowRay sr = integrator_step(s, hit);
       if (sr.enabled != 0u) {
         ++counts.rays;
@@ -82,7 +100,8 @@ class CpuRenderer final : public Renderer {
           for (uint y = tile.rows().begin(); y != tile.rows().end(); ++y)
             for (uint x = tile.cols().begin(); x != tile.cols().end(); ++x)
               render_pixel(*accel_, uvec2(x, y), first, count, seed_,
-                           film.pixels[size_t(y) * film.width + x], local);
+                           film.pixels[size_t(y) * film.width + x],
+                           film.aovs.data() + (size_t(y) * film.width + x) * film.aov_count, local);
           std::uint64_t now = done +=
               std::uint64_t(tile.rows().size()) * tile.cols().size() * count;
           if (progress) {
@@ -128,7 +147,7 @@ RenderResult render_cpu(const Scene& scene, const RenderOptions& options) {
   const Camera& camera = scene.buffers.globals.camera;
   std::unique_ptr<Renderer> renderer = make_cpu_renderer(scene, options);
   return render_all(*renderer, camera.width, camera.height, options.spp ? options.spp : scene.spp,
-                    options.progress);
+                    options.progress, scene.buffers.globals.integrator.aov_count);
 }
 
 }  // namespace tr

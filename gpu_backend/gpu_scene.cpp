@@ -15,7 +15,7 @@ Buffer upload_vector(VulkanDevice& device, const std::vector<T>& v, VkBufferUsag
 }  // namespace
 
 GpuScene::GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptorSetLayout layout,
-                   const Buffer& batches)
+                   const Buffer& batches, const Buffer& aov_batches)
     : device_(device) {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   const VkBufferUsageFlags build_input =
@@ -75,7 +75,9 @@ GpuScene::GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptor
       w.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
       w.pNext = &as_write;
     } else {
-      const Buffer& buffer = b == BINDING_ACCUMULATION ? batches : buffers_[b];
+      const Buffer& buffer = b == BINDING_ACCUMULATION ? batches
+                             : b == BINDING_AOVS       ? aov_batches
+                                                       : buffers_[b];
       infos[b] = VkDescriptorBufferInfo{buffer.handle(), 0, VK_WHOLE_SIZE};
       w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       w.pBufferInfo = &infos[b];

@@ -14,9 +14,9 @@ namespace tr {
 
 class GpuScene {
  public:
-  // batches: the BINDING_ACCUMULATION buffer.
+  // batches: the BINDING_ACCUMULATION buffer; aov_batches: the BINDING_AOVS buffer.
   GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptorSetLayout layout,
-           const Buffer& batches);
+           const Buffer& batches, const Buffer& aov_batches);
   ~GpuScene();
   GpuScene(const GpuScene&) = delete;
   GpuScene& operator=(const GpuScene&) = delete;
@@ -25,7 +25,7 @@ class GpuScene {
 
  private:
   VulkanDevice& device_;
-  std::vector<Buffer> buffers_;  // indexed by binding; BINDING_TLAS and BINDING_ACCUMULATION empty
+  std::vector<Buffer> buffers_;  // indexed by binding; BINDING_TLAS, _ACCUMULATION, _AOVS empty
   std::unique_ptr<SceneAccel> accel_;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

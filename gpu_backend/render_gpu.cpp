@@ -46,6 +46,7 @@ class GpuRenderer final : public Renderer {
       : width_(scene.buffers.globals.camera.width),
         height_(scene.buffers.globals.camera.height),
         pixels_(static_cast<size_t>(width_) * height_),
+        aov_count_(scene.buffers.globals.integrator.aov_count),
         seed_(options.seed) {
     if (width_ == 0 || height_ == 0) throw GpuError("the scene's film has no pixels");
     Clock::time_point phase = Clock::now();
@@ -64,13 +65,23 @@ class GpuRenderer final : public Renderer {
     batches_ = Buffer(*device_, batch_bytes_,
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    // Without AOVs the binding still needs a buffer: one record, never written.
+    aov_bytes_ = pixels_ * aov_count_ * sizeof(PixelBatch);
+    aov_batches_ = Buffer(*device_, std::max<VkDeviceSize>(aov_bytes_, sizeof(PixelBatch)),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     for (Slot& slot : slots_) {
       slot.commands = std::make_unique<AsyncCommands>(*device_);
       slot.readback =
           Buffer(*device_, batch_bytes_, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+      if (aov_count_ > 0)
+        slot.aov_readback =
+            Buffer(*device_, aov_bytes_, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     }
-    scene_ = std::make_unique<GpuScene>(*device_, scene.buffers, pipeline_->set_layout(), batches_);
+    scene_ = std::make_unique<GpuScene>(*device_, scene.buffers, pipeline_->set_layout(), batches_,
+                                        aov_batches_);
     timings_.build_seconds = seconds_since(phase);
     pending_build_seconds_ = timings_.build_seconds;
     batch_size_ = batch_spp(device_info_, pixels_);
@@ -101,6 +112,9 @@ class GpuRenderer final : public Renderer {
       }
       const PixelBatch* batch = static_cast<const PixelBatch*>(slot.readback.mapped());
       merge_batches(batch, slot.sample_count, film.pixels);
+      if (aov_count_ > 0)
+        merge_batches(static_cast<const PixelBatch*>(slot.aov_readback.mapped()), slot.sample_count,
+                      film.aovs);
       for (size_t p = 0; p < pixels_; ++p) {
         film.stats.rays += batch[p].rays;
         film.stats.rejected_nonfinite += batch[p].rejected;
@@ -131,6 +145,7 @@ class GpuRenderer final : public Renderer {
   struct Slot {
     std::unique_ptr<AsyncCommands> commands;
     Buffer readback;
+    Buffer aov_readback;
     uint32_t sample_count = 0;
     Clock::time_point submitted;
   };
@@ -161,6 +176,10 @@ class GpuRenderer final : public Renderer {
                            VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
       VkBufferCopy region{0, 0, batch_bytes_};
       vkCmdCopyBuffer(cmd, batches_.handle(), slot.readback.handle(), 1, &region);
+      if (aov_count_ > 0) {
+        VkBufferCopy aov_region{0, 0, aov_bytes_};
+        vkCmdCopyBuffer(cmd, aov_batches_.handle(), slot.aov_readback.handle(), 1, &aov_region);
+      }
       barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
       barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
@@ -170,6 +189,7 @@ class GpuRenderer final : public Renderer {
 
   uint32_t width_, height_;
   size_t pixels_;
+  uint32_t aov_count_;
   uint32_t seed_;
   DeviceInfo device_info_;
   std::unique_ptr<VulkanInstance> instance_;
@@ -177,6 +197,8 @@ class GpuRenderer final : public Renderer {
   std::unique_ptr<RayTracingPipeline> pipeline_;
   VkDeviceSize batch_bytes_ = 0;
   Buffer batches_;
+  VkDeviceSize aov_bytes_ = 0;
+  Buffer aov_batches_;
   Slot slots_[2];
   std::unique_ptr<GpuScene> scene_;
   uint32_t batch_size_ = 1;
@@ -201,8 +223,9 @@ RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options
                                 const GpuTuning& tuning, GpuTimings* timings) {
   GpuRenderer renderer(scene, options, raygen, raygen_bytes, tuning);
   const Camera& camera = scene.buffers.globals.camera;
-  RenderResult result = render_all(renderer, camera.width, camera.height,
-                                   options.spp != 0 ? options.spp : scene.spp, options.progress);
+  RenderResult result =
+      render_all(renderer, camera.width, camera.height, options.spp != 0 ? options.spp : scene.spp,
+                 options.progress, scene.buffers.globals.integrator.aov_count);
   if (timings) *timings = renderer.timings();
   return result;
 }

@@ -12,9 +12,11 @@ SceneFeatures scene_features(const SceneBuffers& scene) {
   for (const Shape& s : scene.shapes) f.shape_types |= 1u << s.type;
   for (const Texture& t : scene.textures) f.texture_types |= 1u << t.type;
   f.integrator_types = 1u << scene.globals.integrator.type;
+  const Integrator& it = scene.globals.integrator;
+  for (uint i = 0; i < it.aov_count; ++i) f.aov_types |= 1u << it.aov_types[i / 4][i % 4];
   return f;
 }
 
-SceneFeatures all_features() { return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u}; }
+SceneFeatures all_features() { return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u}; }
 
 }  // namespace tr

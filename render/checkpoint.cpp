@@ -35,6 +35,7 @@ std::string header(const RenderIdentity& id, std::uint32_t samples) {
     << "granularity " << id.granularity << "\n"
     << "width " << id.width << "\n"
     << "height " << id.height << "\n"
+    << "aovs " << id.aov_count << "\n"
     << "samples " << samples << "\n"
     << "end\n";
   return h.str();
@@ -57,10 +58,11 @@ void write_checkpoint(const std::string& path, const RenderIdentity& id, const F
   {
     std::ofstream out(tmp.name(), std::ios::binary | std::ios::trunc);
     out << header(id, film.samples);
-    for (const FilmMoments& m : film.pixels) {
-      write_group(out, m.positive);
-      write_group(out, m.negative);
-    }
+    for (const std::vector<FilmMoments>* moments : {&film.pixels, &film.aovs})
+      for (const FilmMoments& m : *moments) {
+        write_group(out, m.positive);
+        write_group(out, m.negative);
+      }
     const RenderStats& s = film.stats;
     out.write(reinterpret_cast<const char*>(&s.seconds), sizeof s.seconds);
     out.write(reinterpret_cast<const char*>(&s.samples), sizeof s.samples);
@@ -103,12 +105,13 @@ FilmState read_checkpoint(const std::string& path, const RenderIdentity& expecte
                             want_line.substr(key.size() + 1) + "'");
     }
   }
-  FilmState film = empty_film(expected.width, expected.height);
+  FilmState film = empty_film(expected.width, expected.height, expected.aov_count);
   film.samples = samples;
-  for (FilmMoments& m : film.pixels) {
-    read_group(in, m.positive);
-    read_group(in, m.negative);
-  }
+  for (std::vector<FilmMoments>* moments : {&film.pixels, &film.aovs})
+    for (FilmMoments& m : *moments) {
+      read_group(in, m.positive);
+      read_group(in, m.negative);
+    }
   RenderStats& s = film.stats;
   in.read(reinterpret_cast<char*>(&s.seconds), sizeof s.seconds);
   in.read(reinterpret_cast<char*>(&s.samples), sizeof s.samples);

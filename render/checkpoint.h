@@ -3,8 +3,8 @@
 // writing leaves the previous one intact. Format (native byte order, read back by the same
 // build only): the line "twinray checkpoint 1", one "key value" line per identity field and
 // for the sample count, the line "end", then per pixel the 14 doubles of its FilmMoments
-// (positive n, mean[3], m2[3], then negative) and the statistics (seconds as a double,
-// samples, rays, rejected as uint64).
+// (positive n, mean[3], m2[3], then negative), the same for each FilmState::aovs entry, and
+// the statistics (seconds as a double, samples, rays, rejected as uint64).
 #pragma once
 
 #include <cstdint>
@@ -28,6 +28,7 @@ struct RenderIdentity {
   std::uint32_t seed = 0;
   std::uint32_t granularity = 1;  // Renderer::granularity()
   std::uint32_t width = 0, height = 0;
+  std::uint32_t aov_count = 0;  // Mitsuba `aov` output variables (FilmState::aov_count)
 };
 
 // FNV-1a 64 of this executable's file (/proc/self/exe), 16 hex digits.

@@ -19,13 +19,20 @@ struct FilmState {
   std::uint32_t samples = 0;  // samples per pixel accumulated: indices [0, samples)
   std::vector<FilmMoments> pixels;
   RenderStats stats;  // seconds: sampling time so far, plus the one acceleration build
+  // Mitsuba `aov` (core/integrators/aov.h): each pixel's samples of aov_count output
+  // variables, as three channels each, pixel-major: aovs[pixel * aov_count + i].
+  std::uint32_t aov_count = 0;
+  std::vector<FilmMoments> aovs;
 };
 
-inline FilmState empty_film(std::uint32_t width, std::uint32_t height) {
+inline FilmState empty_film(std::uint32_t width, std::uint32_t height,
+                            std::uint32_t aov_count = 0) {
   FilmState f;
   f.width = width;
   f.height = height;
   f.pixels.resize(std::size_t(width) * height);
+  f.aov_count = aov_count;
+  f.aovs.resize(f.pixels.size() * aov_count);
   return f;
 }
 
@@ -36,6 +43,15 @@ inline void develop_film(const FilmState& film, std::vector<double>& mean,
   variance.assign(3 * film.pixels.size(), 0.0);
   for (std::size_t p = 0; p < film.pixels.size(); ++p)
     develop(film.pixels[p], &mean[3 * p], &variance[3 * p]);
+}
+
+// The same for the AOVs: 3 * aov_count values per pixel, in FilmState::aovs order.
+inline void develop_aovs(const FilmState& film, std::vector<double>& mean,
+                         std::vector<double>& variance) {
+  mean.assign(3 * film.aovs.size(), 0.0);
+  variance.assign(3 * film.aovs.size(), 0.0);
+  for (std::size_t a = 0; a < film.aovs.size(); ++a)
+    develop(film.aovs[a], &mean[3 * a], &variance[3 * a]);
 }
 
 }  // namespace tr

@@ -46,6 +46,11 @@ struct RenderResult {
   std::uint32_t seed = 0;
   std::vector<double> mean;
   std::vector<double> variance;
+  // Mitsuba `aov`: per pixel, 3 values for each of aov_count output variables (value and
+  // per-sample variance as above; render/film_state.h develop_aovs).
+  std::uint32_t aov_count = 0;
+  std::vector<double> aov_mean;
+  std::vector<double> aov_variance;
   RenderStats stats;
   std::string backend;  // "cpu" or "gpu"
   std::string device;   // e.g. "Embree 3.13.5, 2 threads" or the Vulkan device name

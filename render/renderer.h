@@ -35,6 +35,8 @@ inline RenderResult film_result(const FilmState& film, const Renderer& renderer)
   r.spp = film.samples;
   r.seed = renderer.seed();
   develop_film(film, r.mean, r.variance);
+  r.aov_count = film.aov_count;
+  develop_aovs(film, r.aov_mean, r.aov_variance);
   r.stats = film.stats;
   r.backend = renderer.backend();
   r.device = renderer.device();
@@ -43,8 +45,9 @@ inline RenderResult film_result(const FilmState& film, const Renderer& renderer)
 
 // Renders `spp` samples per pixel in one range.
 inline RenderResult render_all(Renderer& renderer, std::uint32_t width, std::uint32_t height,
-                               std::uint32_t spp, const ProgressFn& progress) {
-  FilmState film = empty_film(width, height);
+                               std::uint32_t spp, const ProgressFn& progress,
+                               std::uint32_t aov_count = 0) {
+  FilmState film = empty_film(width, height, aov_count);
   renderer.render(spp, film, progress);
   return film_result(film, renderer);
 }

@@ -14,6 +14,28 @@ Image to_image(const RenderResult& r, const std::vector<double>& values) {
   return img;
 }
 
+// R, G, B, then each AOV's channels, taken from its three values per pixel.
+Image with_aovs(const RenderResult& r, const std::vector<double>& rgb,
+                const std::vector<double>& aovs,
+                const std::vector<std::vector<std::string>>& aov_channels) {
+  Image img = to_image(r, rgb);
+  if (aov_channels.empty()) return img;
+  img.channel_names = {"R", "G", "B"};
+  for (const std::vector<std::string>& names : aov_channels)
+    img.channel_names.insert(img.channel_names.end(), names.begin(), names.end());
+  img.channels = int(img.channel_names.size());
+  const size_t pixels = size_t(r.width) * r.height;
+  img.pixels.clear();
+  img.pixels.reserve(pixels * img.channels);
+  for (size_t p = 0; p < pixels; ++p) {
+    for (int c = 0; c < 3; ++c) img.pixels.push_back(float(rgb[3 * p + c]));
+    for (size_t a = 0; a < aov_channels.size(); ++a)
+      for (size_t c = 0; c < aov_channels[a].size(); ++c)
+        img.pixels.push_back(float(aovs[3 * (p * r.aov_count + a) + c]));
+  }
+  return img;
+}
+
 }  // namespace
 
 OutputPaths output_paths(const std::string& exr_path) {
@@ -25,7 +47,8 @@ OutputPaths output_paths(const std::string& exr_path) {
 }
 
 void write_result(const RenderResult& result, const OutputPaths& paths,
-                  const std::map<std::string, std::string>& extra, bool half) {
+                  const std::map<std::string, std::string>& extra, bool half,
+                  const std::vector<std::vector<std::string>>& aov_channels) {
   std::map<std::string, std::string> meta = extra;
   meta["twinray:spp"] = std::to_string(result.spp);
   meta["twinray:seed"] = std::to_string(result.seed);
@@ -34,14 +57,14 @@ void write_result(const RenderResult& result, const OutputPaths& paths,
   meta["twinray:seconds"] = std::to_string(result.stats.seconds);
   meta["twinray:rejected_nonfinite"] = std::to_string(result.stats.rejected_nonfinite);
 
-  Image mean = to_image(result, result.mean);
+  Image mean = with_aovs(result, result.mean, result.aov_mean, aov_channels);
   mean.metadata = meta;
-  Image var = to_image(result, result.variance);
+  Image var = with_aovs(result, result.variance, result.aov_variance, aov_channels);
   var.metadata = meta;
   var.metadata["twinray:content"] = "per-sample variance of each pixel's samples";
   write_exr(paths.image, mean, half);
   write_exr(paths.variance, var, half);
-  write_png_srgb(paths.preview, mean);
+  write_png_srgb(paths.preview, to_image(result, result.mean));
 }
 
 }  // namespace tr

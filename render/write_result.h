@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "render/render.h"
 
@@ -21,7 +22,10 @@ OutputPaths output_paths(const std::string& exr_path);
 
 // Metadata written as EXR attributes: spp, seed, backend, device, time, version, plus `extra`.
 // `half`: both EXRs in 16-bit floats (the film's component_format float16), else 32-bit.
+// `aov_channels` (Scene::aov_channels): the names of the AOV channels both EXRs carry after
+// R, G, B, each variable's first channels of RenderResult::aov_mean/aov_variance.
 void write_result(const RenderResult& result, const OutputPaths& paths,
-                  const std::map<std::string, std::string>& extra, bool half);
+                  const std::map<std::string, std::string>& extra, bool half,
+                  const std::vector<std::vector<std::string>>& aov_channels = {});
 
 }  // namespace tr

@@ -5,7 +5,9 @@
 // src/samplers, src/integrators).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "core/rfilter.h"
 #include "scenes/scene_builder.h"
@@ -303,11 +305,91 @@ void take_sampling_integrator_base(Node& m) {
          ": samples_per_pass must be positive");
 }
 
+// Mitsuba's `aov` output variables: `aovs` is a list of name:type pairs separated by commas
+// or spaces (string::tokenize(", ")); each type gives the channels name.<suffix> below. The
+// channel names of the nested integrator (name.R/G/B/A) may not repeat either
+// (hdrfilm.cpp prepare() refuses duplicates).
+struct AovSpec {
+  std::vector<uint> types;
+  std::vector<std::vector<std::string>> channels;
+};
+
+AovSpec parse_aovs(Node& n, const std::string& nested_name) {
+  Property* p = find_property(n, "aovs");
+  std::string list = take_string(n, "aovs");
+  struct TypeChannels {
+    const char* type;
+    uint aov;
+    std::vector<std::string> suffixes;
+  };
+  static const std::vector<TypeChannels> kTypes = {
+      {"albedo", AOV_ALBEDO, {"R", "G", "B"}},
+      {"depth", AOV_DEPTH, {"T"}},
+      {"position", AOV_POSITION, {"X", "Y", "Z"}},
+      {"uv", AOV_UV, {"U", "V"}},
+      {"geo_normal", AOV_GEO_NORMAL, {"X", "Y", "Z"}},
+      {"sh_normal", AOV_SH_NORMAL, {"X", "Y", "Z"}},
+      {"prim_index", AOV_PRIM_INDEX, {"I"}},
+      {"shape_index", AOV_SHAPE_INDEX, {"I"}},
+  };
+  AovSpec spec;
+  std::set<std::string> seen;
+  if (!nested_name.empty())
+    for (const char* c : {".R", ".G", ".B", ".A"}) seen.insert(nested_name + c);
+  size_t start = 0;
+  while (start < list.size()) {
+    size_t end = list.find_first_of(", ", start);
+    if (end == std::string::npos) end = list.size();
+    std::string token = list.substr(start, end - start);
+    start = end + 1;
+    if (token.empty()) continue;
+    size_t colon = token.find(':');
+    if (colon == 0 || colon == std::string::npos || colon + 1 == token.size() ||
+        token.find(':', colon + 1) != std::string::npos)
+      fail(p->loc, describe(n), ": invalid AOV \"", token, "\" (expected <name>:<type>)");
+    std::string name = token.substr(0, colon), type = token.substr(colon + 1);
+    auto t = std::find_if(kTypes.begin(), kTypes.end(),
+                          [&](const TypeChannels& c) { return type == c.type; });
+    if (t == kTypes.end()) {
+      if (type == "dp_du" || type == "dp_dv" || type == "duv_dx" || type == "duv_dy")
+        fail(p->loc, describe(n), ": AOV type \"", type, "\" is not supported by twinray");
+      fail(p->loc, describe(n), ": invalid AOV type \"", type,
+           "\" (albedo, depth, position, uv, geo_normal, sh_normal, prim_index, shape_index)");
+    }
+    if (spec.types.size() == AOV_MAX) fail(p->loc, describe(n), ": more than ", AOV_MAX, " AOVs");
+    std::vector<std::string> channels;
+    for (const std::string& suffix : t->suffixes) {
+      channels.push_back(name + "." + suffix);
+      if (!seen.insert(channels.back()).second)
+        fail(p->loc, describe(n), ": duplicate channel name \"", channels.back(), "\"");
+    }
+    spec.types.push_back(t->aov);
+    spec.channels.push_back(channels);
+  }
+  return spec;
+}
+
 }  // namespace
 
 void SceneBuilder::add_integrator(Node& n) {
   Node* inner = &n;
-  if (n.type == "moment") {
+  AovSpec aovs;
+  bool black = false;  // an aov integrator without a nested one: Mitsuba's colour is zero
+  if (n.type == "aov") {
+    std::vector<Property*> nested = take_objects(n, "integrator");
+    if (nested.size() > 1)
+      fail(nested[1]->loc, describe(n),
+           ": twinray renders one nested integrator (Mitsuba writes each into its own channels)");
+    aovs = parse_aovs(n, nested.empty() ? "" : nested[0]->name);
+    // Read by Mitsuba's Integrator base; the AOVs do not depend on it.
+    take_bool(n, "hide_emitters", false);
+    take_sampling_integrator_base(n);
+    check_consumed(n);
+    if (nested.empty())
+      black = true;
+    else
+      inner = nested[0]->object.get();
+  } else if (n.type == "moment") {
     std::vector<Property*> nested = take_objects(n, "integrator");
     if (nested.size() != 1)
       fail(n.loc, describe(n),
@@ -322,6 +404,15 @@ void SceneBuilder::add_integrator(Node& n) {
   it.rr_depth = 5;
   it.emitter_samples = it.bsdf_samples = 1u;
   Node& m = *inner;
+  for (size_t i = 0; i < aovs.types.size(); ++i) it.aov_types[i / 4][i % 4] = aovs.types[i];
+  it.aov_count = uint(aovs.types.size());
+  scene_.aov_channels = aovs.channels;
+  if (black) {
+    it.type = INTEGRATOR_PATH;
+    it.max_depth = 0;
+    scene_.integrator_name = "aov";
+    return;
+  }
   if (m.type == "path") {
     it.type = INTEGRATOR_PATH;
     long long max_depth = take_integer(m, "max_depth", -1),
@@ -351,13 +442,16 @@ void SceneBuilder::add_integrator(Node& n) {
     it.bsdf_samples = uint(bsdf);
   } else if (m.type == "moment") {
     fail(m.loc, "nested moment integrators are not supported");
+  } else if (m.type == "aov") {
+    fail(m.loc, "nested aov integrators are not supported");
   } else {
-    fail(m.loc, "unknown integrator type \"", m.type, "\" (supported: path, direct, moment)");
+    fail(m.loc, "unknown integrator type \"", m.type, "\" (supported: path, direct, moment, aov)");
   }
   it.hide_emitters = take_bool(m, "hide_emitters", false) ? 1u : 0u;
   take_sampling_integrator_base(m);
   check_consumed(m);
-  scene_.integrator_name = n.type == "moment" ? "moment(" + m.type + ")" : m.type;
+  scene_.integrator_name =
+      n.type == "moment" || n.type == "aov" ? n.type + "(" + m.type + ")" : m.type;
 }
 
 }  // namespace tr

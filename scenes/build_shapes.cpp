@@ -1,7 +1,9 @@
 // Shape plugins -> Shape/Instance records and vertex buffers. Meshes outside shapegroups are
 // pre-transformed to world space; analytic shapes keep a canonical object and its transforms
 // (core/scene_types.h). Semantics follow Mitsuba 3's src/shapes/*.cpp.
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "core/frame.h"
@@ -94,7 +96,7 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   r.flags = 0u;
   r.emitter = NO_INDEX;
   r.first_index = r.triangle_count = r.first_vertex = r.vertex_count = 0u;
-  r.pad0 = r.pad1 = r.pad2 = 0u;
+  r.scene_index = r.prim_offset = r.pad2 = 0u;
   set_transforms(r, glm::dmat4(1.0));
 
   glm::dmat4 to_world = take_transform(n, "to_world");
@@ -134,6 +136,8 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
 
   const std::string& type = n.type;
   bool from_file = type == "obj" || type == "ply" || type == "serialized";
+  s.mitsuba_mesh = from_file || type == "rectangle" || type == "cube";
+  if (!s.mitsuba_mesh) r.prim_offset = NO_INDEX;
   if (from_file || type == "rectangle" || type == "cube") {
     r.type = SHAPE_MESH;
     bool face_normals = take_bool(n, "face_normals", false);  // every Mitsuba mesh reads it
@@ -227,6 +231,51 @@ void SceneBuilder::add_instance(Node& inst) {
   instances_.push_back({group_index_[&g], to_world});
 }
 
+// Mitsuba 3.8's parser (src/core/parser.cpp) reorders the scene's children, area-emitting
+// shapes before the others (transform_reorder), then hands them all to a `merge` shape
+// (transform_merge_meshes, src/shapes/merge.cpp), which passes non-meshes through in order and
+// merges meshes of equal BSDF, emitter, vertex normals and uvs into one mesh, appending each
+// later mesh's triangles; the merged meshes come last. Scene::shapes() is that list without
+// shapegroups (src/render/scene.cpp). Mitsuba lists the merged meshes in the order of a hash
+// table keyed by object addresses; here they follow their first member. Equal BSDFs: the
+// parser merges equivalent objects (transform_merge_equivalent), here equal Material records.
+void SceneBuilder::number_shapes_as_mitsuba() {
+  uint next = 0;
+  for (bool emitting_pass : {true, false})
+    for (const auto& [is_instance, i] : top_level_order_) {
+      if (is_instance) {
+        if (!emitting_pass) instances_[i].scene_index = next++;
+      } else if (!top_shapes_[i].mitsuba_mesh && top_shapes_[i].emitting == emitting_pass) {
+        top_shapes_[i].record.scene_index = next++;
+      }
+    }
+  struct MergedMesh {
+    const PendingShape* first;
+    uint scene_index;
+    uint triangles;
+  };
+  std::vector<MergedMesh> merged;
+  auto mergeable = [&](const PendingShape& a, const PendingShape& b) {
+    const uint attributes = SHAPE_HAS_NORMALS | SHAPE_HAS_UVS;
+    return !a.emitting && !b.emitting &&
+           (a.record.flags & attributes) == (b.record.flags & attributes) &&
+           std::memcmp(&b_.materials[a.record.material], &b_.materials[b.record.material],
+                       sizeof(Material)) == 0;
+  };
+  for (bool emitting_pass : {true, false})
+    for (const auto& [is_instance, i] : top_level_order_) {
+      if (is_instance) continue;
+      PendingShape& s = top_shapes_[i];
+      if (!s.mitsuba_mesh || s.emitting != emitting_pass) continue;
+      auto m = std::find_if(merged.begin(), merged.end(),
+                            [&](const MergedMesh& g) { return mergeable(*g.first, s); });
+      if (m == merged.end()) m = merged.insert(merged.end(), MergedMesh{&s, next++, 0u});
+      s.record.scene_index = m->scene_index;
+      s.record.prim_offset = m->triangles;
+      m->triangles += s.record.triangle_count;
+    }
+}
+
 void SceneBuilder::finalize_shapes() {
   auto append = [&](PendingShape& s) {
     uint index = uint(b_.shapes.size());
@@ -292,6 +341,7 @@ void SceneBuilder::finalize_shapes() {
     store_rows(glm::inverse(pi.to_world), inst.to_object);
     inst.first_shape = g.first_shape;
     inst.shape_count = uint(g.shapes.size());
+    inst.scene_index = pi.scene_index;
     b_.instances.push_back(inst);
   }
 }

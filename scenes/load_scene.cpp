@@ -54,12 +54,15 @@ Scene SceneBuilder::build() {
       continue;
     }
     if (o.tag == "shape") {
-      if (o.type == "shapegroup")
+      if (o.type == "shapegroup") {
         add_shapegroup(o);
-      else if (o.type == "instance")
+      } else if (o.type == "instance") {
         add_instance(o);
-      else
+        top_level_order_.push_back({true, instances_.size() - 1});
+      } else {
         add_shape(o, top_shapes_, false);
+        top_level_order_.push_back({false, top_shapes_.size() - 1});
+      }
     } else if (o.tag == "bsdf") {
       material(o);
     } else if (o.tag == "texture") {
@@ -88,6 +91,7 @@ Scene SceneBuilder::build() {
     add_integrator(path);
   }
 
+  number_shapes_as_mitsuba();
   finalize_shapes();
   finalize_emitters();
   b_.globals.instance_count = uint(b_.instances.size());

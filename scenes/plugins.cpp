@@ -109,7 +109,7 @@ const Entry TABLE[] = {
     {"integrator", "path", PluginSupport::Supported, ""},
     {"integrator", "direct", PluginSupport::Supported, ""},
     {"integrator", "moment", PluginSupport::Supported, ""},
-    {"integrator", "aov", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"integrator", "aov", PluginSupport::Supported, ""},
     {"integrator", "stokes", PluginSupport::OutOfScope, POLARIZATION},
     {"integrator", "volpath", PluginSupport::OutOfScope, MEDIA},
     {"integrator", "volpathmis", PluginSupport::OutOfScope, MEDIA},

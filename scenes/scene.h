@@ -40,6 +40,8 @@ struct Scene {
   uint seed = 0;                // sampler `seed`
   bool film_half = true;        // hdrfilm `component_format` float16 (Mitsuba's default)
   std::string integrator_name;  // e.g. "path", "moment(path)"
+  // Mitsuba `aov`: per output variable (Integrator.aov_types order), its EXR channel names.
+  std::vector<std::vector<std::string>> aov_channels;
 };
 
 // Bad input: `what()` is one line, "file:line: what and why".

@@ -23,6 +23,7 @@ struct PendingShape {
   Shape record{};
   TriangleMesh mesh;  // SHAPE_MESH only; world space (group space inside a shapegroup)
   bool emitting = false;
+  bool mitsuba_mesh = false;  // a Mesh in Mitsuba (obj, ply, serialized, rectangle, cube)
   glm::vec3 radiance{0.0f};
   double sampling_weight = 1.0;
   Location emitter_loc;
@@ -77,6 +78,7 @@ class SceneBuilder {
   struct PendingInstance {
     uint group;
     glm::dmat4 to_world;
+    uint scene_index = 0;
   };
   std::vector<PendingInstance> instances_;
   // The object-space mesh of an obj, ply or serialized shape (`filename` and the parameters
@@ -85,6 +87,10 @@ class SceneBuilder {
   void add_shape(Node& shape, std::vector<PendingShape>& out, bool in_group);
   void add_shapegroup(Node& group);
   void add_instance(Node& instance);
+  // Top-level shapes (false, index into top_shapes_) and instances (true, into instances_) in
+  // document order.
+  std::vector<std::pair<bool, size_t>> top_level_order_;
+  void number_shapes_as_mitsuba();
   void finalize_shapes();
 
   // ---- emitters (build_emitters.cpp)

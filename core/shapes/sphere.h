@@ -35,11 +35,14 @@ INLINE bool intersect_unit_sphere(vec3 o, vec3 d, float tmin, float tmax, OUT(fl
   return false;
 }
 
-// Mitsuba's sphere parameterization: u = phi / 2pi, v = theta / pi (object space).
+// Mitsuba's sphere parameterization: u = phi / 2pi, v = theta / pi (object space). theta as
+// atan2(sin, cos): acos(p.z) loses digits near the poles, and GPU acos/asin approximations
+// (lavapipe) lose about 1e-4 everywhere, while their atan2 is as accurate as the phi above.
 INLINE vec2 unit_sphere_uv(vec3 p) {
   float phi = atan(p.y, p.x);
   if (phi < 0.0f) phi += 2.0f * PI;
-  return vec2(phi * INV_TWO_PI, safe_acos(p.z) * INV_PI);
+  float theta = atan(length(vec2(p.x, p.y)), p.z);
+  return vec2(phi * INV_TWO_PI, theta * INV_PI);
 }
 
 TR_NAMESPACE_END

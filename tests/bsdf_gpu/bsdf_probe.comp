@@ -14,7 +14,8 @@ layout(local_size_x = 64) in;
 
 // 1: the deliberately broken variant: every smooth BSDF density, sampled or evaluated, is off by
 // a factor |cos theta_o| (the sampled weight follows it, so only the chi-square can tell).
-layout(constant_id = 6) const uint SPEC_PDF_OFF_BY_COSINE = 0u;
+// (An id past shaders/features.glsl's, which grow from 0.)
+layout(constant_id = 100) const uint SPEC_PDF_OFF_BY_COSINE = 0u;
 
 layout(std430, set = 1, binding = 0) readonly buffer QueryBuffer { ProbeQuery g_queries[]; };
 layout(std430, set = 1, binding = 1) writeonly buffer ResultBuffer { ProbeResult g_results[]; };

@@ -146,7 +146,7 @@ void ProbeDevice::destroy_pipeline() {
 double ProbeDevice::build(const ProbeVariant& variant) {
   destroy_pipeline();
   // constant_id 0..5: shaders/features.glsl (BSDFs, emitters, shapes, textures, material
-  // flags, integrators); 6: the broken variant.
+  // flags, integrators); 100: the broken variant (bsdf_probe.comp).
   const uint32_t constants[7] = {variant.bsdf_types,
                                  0u,
                                  0u,
@@ -155,7 +155,7 @@ double ProbeDevice::build(const ProbeVariant& variant) {
                                  0u,
                                  variant.pdf_off_by_cosine ? 1u : 0u};
   VkSpecializationMapEntry entries[7];
-  for (uint32_t i = 0; i < 7; ++i) entries[i] = {i, i * 4u, 4u};
+  for (uint32_t i = 0; i < 7; ++i) entries[i] = {i == 6 ? 100u : i, i * 4u, 4u};
   VkSpecializationInfo specialization{7, entries, sizeof(constants), constants};
   VkComputePipelineCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;

@@ -38,6 +38,8 @@ lit wrong_type '<shape type="sphere"><bsdf type="diffuse"><string name="reflecta
 lit bad_float '<shape type="sphere"><float name="radius" value="abc"/></shape>'
 lit bad_integer '<shape type="sphere"/><integrator type="path"><integer name="max_depth" value="2.5"/></integrator>'
 lit huge_integer '<shape type="sphere"/><integrator type="path"><integer name="max_depth" value="99999999999999999999"/></integrator>'
+lit aov_unknown_type '<shape type="sphere"/><integrator type="aov"><string name="aovs" value="dd:depth,vv:velocity"/></integrator>'
+lit aov_bad_list '<shape type="sphere"/><integrator type="aov"><string name="aovs" value="dd:depth;nn:sh_normal"/></integrator>'
 lit undefined_default '<shape type="sphere"><float name="radius" value="$size"/></shape>'
 lit missing_include '<include filename="nowhere.xml"/>'
 echo '<scene version="3.0.0"><include filename="cycle_b.xml"/></scene>' >"$d/cycle_a.xml"
@@ -144,6 +146,8 @@ check wrong_value_type 3 'wrong_type\.xml:[0-9]+: .*reflectance' -- $(r wrong_ty
 check bad_float 3 'bad_float\.xml:[0-9]+: .*abc' -- $(r bad_float)
 check bad_integer 3 'bad_integer\.xml:[0-9]+: .*2\.5' -- $(r bad_integer)
 check huge_integer 3 'huge_integer\.xml:[0-9]+: .*max_depth' -- $(r huge_integer)
+check aov_unknown_type 3 'aov_unknown_type\.xml:[0-9]+: .*invalid AOV type "velocity"' -- $(r aov_unknown_type)
+check aov_bad_list 3 'aov_bad_list\.xml:[0-9]+: .*invalid AOV "dd:depth;nn:sh_normal"' -- $(r aov_bad_list)
 check undefined_default 3 'undefined_default\.xml:[0-9]+: .*size' -- $(r undefined_default)
 check missing_include 3 'missing_include\.xml:[0-9]+: .*nowhere\.xml' -- $(r missing_include)
 check include_cycle 3 'cycle_.\.xml:[0-9]+: .*(cycle|recurs|itself)' -- $(r include_cycle)
