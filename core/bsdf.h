@@ -9,6 +9,8 @@
 //     weight 1, pdf 1 - alpha) with probability 1 - alpha, else samples the nested BSDF with
 //     u1 rescaled to [0, 1) (pdf times alpha, weight unchanged).
 // The two wrappers commute, so their nesting order in the scene file does not matter.
+// bsdf_leaf_* evaluate such a material; the public bsdf_* also take Mitsuba `blendbsdf`
+// (core/bsdf/blend.h), a mixture of other materials, possibly blends themselves.
 //
 //   bsdf_flags(m, uv)           lobes this material can produce (BSDF_* bits)
 //   bsdf_eval(m, uv, wi, wo)    f(wi, wo) |cos theta_o|, zero for delta lobes
@@ -160,14 +162,14 @@ INLINE float bsdf_opacity(Material m, vec2 uv) {
   return 1.0f;
 }
 
-INLINE uint bsdf_flags(Material m, vec2 uv) {
+INLINE uint bsdf_leaf_flags(Material m, vec2 uv) {
   uint flags = bsdf_base_flags(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
     flags |= BSDF_NULL;
   return flags;
 }
 
-INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_leaf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -175,7 +177,7 @@ INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m, uv);
 }
 
-INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_leaf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -183,7 +185,7 @@ INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m, uv);
 }
 
-INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_leaf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   float opacity = bsdf_opacity(m, uv);
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
@@ -195,6 +197,32 @@ INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
     s.wo.z = mulsign(s.wo.z, wi_z);
   s.pdf *= opacity;
   return s;
+}
+
+TR_NAMESPACE_END
+
+#include "core/bsdf/blend.h"
+
+TR_NAMESPACE_BEGIN
+
+INLINE uint bsdf_flags(Material m, vec2 uv) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_flags(m, uv);
+  return bsdf_leaf_flags(m, uv);
+}
+
+INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_eval(m, uv, wi, wo);
+  return bsdf_leaf_eval(m, uv, wi, wo);
+}
+
+INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_pdf(m, uv, wi, wo);
+  return bsdf_leaf_pdf(m, uv, wi, wo);
+}
+
+INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_sample(m, uv, wi, u1, u2);
+  return bsdf_leaf_sample(m, uv, wi, u1, u2);
 }
 
 TR_NAMESPACE_END

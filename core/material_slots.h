@@ -46,6 +46,12 @@ const uint PRINCIPLED_SPEC_TRANS = 10u;
 //          clearcoat_sampling_rate), never textured
 const uint PRINCIPLED_SAMPLING_RATES = 11u;
 
+// blendbsdf: weight (scalar texture); child material indices in value.x (exact as floats)
+const uint BLEND_WEIGHT = 0u;
+const uint BLEND_BSDF_0 = 1u;
+const uint BLEND_BSDF_1 = 2u;
+const uint BLEND_MAX_DEPTH = 7u;  // levels of nested blends (core/bsdf/blend.h's stack)
+
 TR_NAMESPACE_END
 
 #endif

@@ -3,6 +3,7 @@
 // src/textures/*.cpp; tests/scenes/plugin_defaults_test.cpp pins them).
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/bsdf/roughplastic.h"
@@ -102,11 +103,19 @@ bool has_transmission(Node& bsdf) {
   if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric" || t == "mask")
     return true;
   if (t == "principled") return principled_has_spec_trans(bsdf);
-  if (t == "twosided")
+  if (t == "twosided" || t == "blendbsdf")
     for (Property& p : bsdf.props)
       if (p.kind == PropertyKind::Object && p.object->tag == "bsdf" && has_transmission(*p.object))
         return true;
   return false;
+}
+
+// Levels of blends in the tree rooted at a material (0 for any other BSDF).
+uint blend_depth(const std::vector<Material>& materials, const Material& m) {
+  if (m.type != BSDF_BLEND) return 0u;
+  uint d0 = blend_depth(materials, materials[uint(m.param[BLEND_BSDF_0].value.x)]);
+  uint d1 = blend_depth(materials, materials[uint(m.param[BLEND_BSDF_1].value.x)]);
+  return 1u + std::max(d0, d1);
 }
 
 }  // namespace
@@ -429,6 +438,8 @@ Material SceneBuilder::build_material(Node& n) {
       fail(n.loc, describe(n), ": the nested ", describe(*inner[0]->object),
            " transmits light; Mitsuba accepts it only with allow_transmission = true");
     m = build_material(*inner[0]->object);
+    if (type == "mask" && m.type == BSDF_BLEND)
+      fail(n.loc, describe(n), " around a blendbsdf is not supported");
     if (type == "twosided") {
       // A nested twosided is the identity here: wi is already on the front side.
       m.flags |= MATERIAL_TWOSIDED;
@@ -437,10 +448,24 @@ Material SceneBuilder::build_material(Node& n) {
       m.flags |= MATERIAL_MASKED;
       m.opacity = opacity;
     }
+  } else if (type == "blendbsdf") {
+    // Mitsuba 3.8 src/bsdfs/blendbsdf.cpp: exactly two nested BSDFs and a required `weight`.
+    std::vector<Property*> inner = take_objects(n, "bsdf");
+    if (inner.size() != 2)
+      fail(inner.size() > 2 ? inner[2]->loc : n.loc, describe(n),
+           " takes exactly two nested BSDFs (it has ", inner.size(), ")");
+    if (!has_property(n, "weight")) fail(n.loc, describe(n), " needs a 'weight'");
+    m = empty_material(BSDF_BLEND);
+    m.param[BLEND_WEIGHT] = textured(n, "weight", glm::dvec3(0.5), true);
+    m.param[BLEND_BSDF_0] = constant_value(glm::dvec3(material(*inner[0]->object)));
+    m.param[BLEND_BSDF_1] = constant_value(glm::dvec3(material(*inner[1]->object)));
+    if (blend_depth(b_.materials, m) > BLEND_MAX_DEPTH)
+      fail(n.loc, describe(n), ": blendbsdfs nested more than ", BLEND_MAX_DEPTH,
+           " deep are not supported");
   } else {
     fail(n.loc, "unknown BSDF type \"", type,
          "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-         "thindielectric, plastic, roughplastic, principled, twosided, mask)");
+         "thindielectric, plastic, roughplastic, principled, twosided, mask, blendbsdf)");
   }
   check_consumed(n);
   return m;

@@ -273,6 +273,39 @@ void add_bsdfs(StatisticalList& list) {
           kOneSided, false);
     }
   }
+  if (bsdf_available(diffuse(vec3(0.5f))) && bsdf_type_available(BSDF_BLEND)) {
+    const Material rough_gold =
+        roughconductor(Distribution::ggx, 0.3f, 0.3f, true, gold_eta, gold_k, vec3(1.0f));
+    const Material rough_glass =
+        roughdielectric(Distribution::beckmann, 0.3f, 0.3f, true, 1.5f, vec3(1.0f), vec3(1.0f));
+    const Material blue = diffuse(vec3(0.2f, 0.5f, 0.9f));
+    for (float w : {0.3f, 0.9f}) {
+      list.bsdf(
+          "blendbsdf", "blendbsdf(diffuse, roughconductor ggx a=0.3) w=" + fmt(w),
+          [=] { return blend(blue, rough_gold, w); }, kOneSided, false);
+    }
+    list.bsdf(
+        "blendbsdf", "blendbsdf(roughdielectric beckmann a=0.3, roughconductor) w=0.6",
+        [=] { return blend(rough_glass, rough_gold, 0.6f); }, kBothSides, true);
+    list.bsdf(
+        "blendbsdf", "twosided(blendbsdf(diffuse, roughconductor)) w=0.5",
+        [=] { return twosided(blend(blue, rough_gold, 0.5f)); }, kBothSides, false);
+    list.bsdf(
+        "blendbsdf", "blendbsdf(blendbsdf(diffuse, roughconductor) w=0.3, roughplastic) w=0.7",
+        [=] {
+          Material plastic_rough = roughplastic(Distribution::beckmann, 0.2f, true, 1.5f,
+                                                vec3(0.5f, 0.3f, 0.1f), vec3(1.0f), false);
+          return blend(blend(blue, rough_gold, 0.3f), plastic_rough, 0.7f);
+        },
+        kOneSided, false);
+    list.bsdf(
+        "blendbsdf", "blendbsdf(mask(diffuse) opacity=0.4, twosided(roughconductor)) w=0.5",
+        [=] { return blend(masked(blue, 0.4f), twosided(rough_gold), 0.5f); }, kBothSides, false);
+    list.bsdf(
+        "blendbsdf", "blendbsdf(conductor, diffuse) w=0.5",
+        [=] { return blend(conductor(gold_eta, gold_k, vec3(1.0f)), blue, 0.5f); }, kOneSided,
+        false);
+  }
   if (bsdf_available(principled(PrincipledParameters{}))) {
     // A grid over the weights: each lobe alone, pairs, and everything at once.
     struct Setting {
@@ -417,6 +450,26 @@ std::vector<ExtremesCase> build_extremes() {
             }
           }
         }
+      }
+    }
+  }
+  if (bsdf_type_available(BSDF_BLEND)) {
+    for (float w : {0.0f, 1e-6f, 0.5f, 1.0f - 1e-6f, 1.0f}) {
+      for (vec3 r : kReflectances) {
+        std::string p = " w=" + fmt(w) + " r=" + fmt(r.x);
+        add("blendbsdf", "blendbsdf(diffuse, conductor)" + p,
+            blend(diffuse(r), conductor(vec3(0.2f), vec3(3.9f), r), w));
+        add("blendbsdf", "blendbsdf(roughdielectric a=1e-3, diffuse)" + p,
+            blend(roughdielectric(Distribution::ggx, 1e-3f, 1e-3f, true, 1.5f, r, r), diffuse(r),
+                  w));
+        add("blendbsdf", "blendbsdf(dielectric, roughconductor a=1e-4)" + p,
+            blend(dielectric(1.5f, r, r),
+                  roughconductor(Distribution::beckmann, 1e-4f, 1e-4f, true, vec3(0.2f), vec3(3.9f),
+                                 r),
+                  w));
+        add("blendbsdf", "twosided(blendbsdf(blendbsdf(diffuse, plastic), mask(diffuse) 0.5))" + p,
+            twosided(blend(blend(diffuse(r), plastic(1.5f, r, r, false), w),
+                           masked(diffuse(r), 0.5f), 1.0f - w)));
       }
     }
   }
