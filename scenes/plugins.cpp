@@ -57,7 +57,7 @@ const Entry TABLE[] = {
     {"bsdf", "mask", PluginSupport::Supported, ""},
     {"bsdf", "normalmap", PluginSupport::Planned, PLUGINS_ISSUE},
     {"bsdf", "bumpmap", PluginSupport::Planned, PLUGINS_ISSUE},
-    {"bsdf", "blendbsdf", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"bsdf", "blendbsdf", PluginSupport::Supported, ""},
     {"bsdf", "pplastic", PluginSupport::Planned, PLUGINS_ISSUE},
     {"bsdf", "polarizer", PluginSupport::OutOfScope, POLARIZATION},
     {"bsdf", "retarder", PluginSupport::OutOfScope, POLARIZATION},
