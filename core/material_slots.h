@@ -52,6 +52,12 @@ const uint BLEND_BSDF_0 = 1u;
 const uint BLEND_BSDF_1 = 2u;
 const uint BLEND_MAX_DEPTH = 7u;  // levels of nested blends (core/bsdf/blend.h's stack)
 
+// normalmap: the normal texture (RGB, n = 2 rgb - 1); the child material index in value.x;
+// value = (flip_invalid_normals, use_shadowing_function, 0) as 0 / 1, never textured
+const uint NORMALMAP_NORMALMAP = 0u;
+const uint NORMALMAP_BSDF = 1u;
+const uint NORMALMAP_OPTIONS = 2u;
+
 TR_NAMESPACE_END
 
 #endif

@@ -103,7 +103,7 @@ bool has_transmission(Node& bsdf) {
   if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric" || t == "mask")
     return true;
   if (t == "principled") return principled_has_spec_trans(bsdf);
-  if (t == "twosided" || t == "blendbsdf")
+  if (t == "twosided" || t == "blendbsdf" || t == "normalmap")
     for (Property& p : bsdf.props)
       if (p.kind == PropertyKind::Object && p.object->tag == "bsdf" && has_transmission(*p.object))
         return true;
@@ -438,8 +438,9 @@ Material SceneBuilder::build_material(Node& n) {
       fail(n.loc, describe(n), ": the nested ", describe(*inner[0]->object),
            " transmits light; Mitsuba accepts it only with allow_transmission = true");
     m = build_material(*inner[0]->object);
-    if (type == "mask" && m.type == BSDF_BLEND)
-      fail(n.loc, describe(n), " around a blendbsdf is not supported");
+    if (type == "mask" && (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP))
+      fail(n.loc, describe(n), " around a ", m.type == BSDF_BLEND ? "blendbsdf" : "normalmap",
+           " is not supported");
     if (type == "twosided") {
       // A nested twosided is the identity here: wi is already on the front side.
       m.flags |= MATERIAL_TWOSIDED;
@@ -459,13 +460,34 @@ Material SceneBuilder::build_material(Node& n) {
     m.param[BLEND_WEIGHT] = textured(n, "weight", glm::dvec3(0.5), true);
     m.param[BLEND_BSDF_0] = constant_value(glm::dvec3(material(*inner[0]->object)));
     m.param[BLEND_BSDF_1] = constant_value(glm::dvec3(material(*inner[1]->object)));
+    for (uint slot : {BLEND_BSDF_0, BLEND_BSDF_1})
+      if (b_.materials[uint(m.param[slot].value.x)].type == BSDF_NORMALMAP)
+        fail(n.loc, describe(n), ": a normalmap inside a blendbsdf is not supported");
     if (blend_depth(b_.materials, m) > BLEND_MAX_DEPTH)
       fail(n.loc, describe(n), ": blendbsdfs nested more than ", BLEND_MAX_DEPTH,
            " deep are not supported");
+  } else if (type == "normalmap") {
+    // Mitsuba 3.8 src/bsdfs/normalmap.cpp: one nested BSDF, a required `normalmap` texture.
+    std::vector<Property*> inner = take_objects(n, "bsdf");
+    if (inner.size() != 1)
+      fail(inner.size() > 1 ? inner[1]->loc : n.loc, describe(n),
+           " takes exactly one nested BSDF (it has ", inner.size(), ")");
+    if (!has_property(n, "normalmap")) fail(n.loc, describe(n), " needs a 'normalmap' texture");
+    m = empty_material(BSDF_NORMALMAP);
+    m.param[NORMALMAP_NORMALMAP] = textured(n, "normalmap", glm::dvec3(0.5, 0.5, 1.0), false);
+    bool flip = take_bool(n, "flip_invalid_normals", true);
+    bool shadowing = take_bool(n, "use_shadowing_function", true);
+    m.param[NORMALMAP_OPTIONS] =
+        constant_value(glm::dvec3(flip ? 1.0 : 0.0, shadowing ? 1.0 : 0.0, 0.0));
+    uint child = material(*inner[0]->object);
+    if (b_.materials[child].type == BSDF_NORMALMAP)
+      fail(inner[0]->loc, describe(n), ": nested normalmaps are not supported");
+    m.param[NORMALMAP_BSDF] = constant_value(glm::dvec3(child));
   } else {
-    fail(n.loc, "unknown BSDF type \"", type,
-         "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-         "thindielectric, plastic, roughplastic, principled, twosided, mask, blendbsdf)");
+    fail(
+        n.loc, "unknown BSDF type \"", type,
+        "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
+        "thindielectric, plastic, roughplastic, principled, twosided, mask, blendbsdf, normalmap)");
   }
   check_consumed(n);
   return m;

@@ -55,7 +55,7 @@ const Entry TABLE[] = {
     {"bsdf", "principled", PluginSupport::Supported, ""},
     {"bsdf", "twosided", PluginSupport::Supported, ""},
     {"bsdf", "mask", PluginSupport::Supported, ""},
-    {"bsdf", "normalmap", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"bsdf", "normalmap", PluginSupport::Supported, ""},
     {"bsdf", "bumpmap", PluginSupport::Planned, PLUGINS_ISSUE},
     {"bsdf", "blendbsdf", PluginSupport::Supported, ""},
     {"bsdf", "pplastic", PluginSupport::Planned, PLUGINS_ISSUE},

@@ -1,5 +1,5 @@
-// Loading of Mitsuba 3.8's BSDF adapters (src/bsdfs/blendbsdf.cpp): the records they build and
-// the scenes Mitsuba refuses.
+// Loading of Mitsuba 3.8's BSDF adapters (src/bsdfs/blendbsdf.cpp, normalmap.cpp): the records
+// they build and the scenes Mitsuba refuses.
 #include <gtest/gtest.h>
 
 #include "core/material_slots.h"
@@ -104,6 +104,55 @@ TEST(BlendBsdf, LimitsOfTheRepresentation) {
   };
   EXPECT_EQ(load_bsdf(nested(BLEND_MAX_DEPTH)).buffers.materials.size(), 2u * BLEND_MAX_DEPTH + 1u);
   EXPECT_NE(error_of(nested(BLEND_MAX_DEPTH + 1u)).find("nested more than 7 deep"),
+            std::string::npos);
+}
+
+const std::string kNormal = "<rgb name=\"normalmap\" value=\"0.6, 0.4, 0.9\"/>";
+
+TEST(NormalMap, DefaultsAndOptions) {
+  Scene d = load_bsdf("<bsdf type=\"normalmap\">" + kNormal + kDiffuse + "</bsdf>");
+  const Material& m = shape_material(d);
+  ASSERT_EQ(m.type, BSDF_NORMALMAP);
+  EXPECT_EQ(child(d, m, NORMALMAP_BSDF).type, BSDF_DIFFUSE);
+  // An RGB texture read by eval_3: the color itself, not its mean.
+  EXPECT_FLOAT_EQ(m.param[NORMALMAP_NORMALMAP].value.x, 0.6f);
+  EXPECT_FLOAT_EQ(m.param[NORMALMAP_NORMALMAP].value.z, 0.9f);
+  // flip_invalid_normals and use_shadowing_function default to true (Mitsuba 3.8).
+  EXPECT_EQ(m.param[NORMALMAP_OPTIONS].value.x, 1.0f);
+  EXPECT_EQ(m.param[NORMALMAP_OPTIONS].value.y, 1.0f);
+  Scene o = load_bsdf(
+      "<bsdf type=\"normalmap\"><boolean name=\"flip_invalid_normals\" value=\"false\"/>"
+      "<boolean name=\"use_shadowing_function\" value=\"false\"/>" +
+      kNormal + kDiffuse + "</bsdf>");
+  EXPECT_EQ(shape_material(o).param[NORMALMAP_OPTIONS].value.x, 0.0f);
+  EXPECT_EQ(shape_material(o).param[NORMALMAP_OPTIONS].value.y, 0.0f);
+  Scene t = load_bsdf("<bsdf type=\"twosided\"><bsdf type=\"normalmap\">" + kNormal +
+                      "<bsdf type=\"blendbsdf\"><float name=\"weight\" value=\"0.5\"/>" + kDiffuse +
+                      kConductor + "</bsdf></bsdf></bsdf>");
+  EXPECT_NE(shape_material(t).flags & MATERIAL_TWOSIDED, 0u);
+  EXPECT_EQ(child(t, shape_material(t), NORMALMAP_BSDF).type, BSDF_BLEND);
+}
+
+TEST(NormalMap, RefusalsAndLimits) {
+  EXPECT_NE(
+      error_of("<bsdf type=\"normalmap\">" + kDiffuse + "</bsdf>").find("needs a 'normalmap'"),
+      std::string::npos);
+  EXPECT_NE(error_of("<bsdf type=\"normalmap\">" + kNormal + "</bsdf>")
+                .find("takes exactly one nested BSDF (it has 0)"),
+            std::string::npos);
+  EXPECT_NE(error_of("<bsdf type=\"normalmap\">" + kNormal + kDiffuse + kConductor + "</bsdf>")
+                .find("takes exactly one nested BSDF (it has 2)"),
+            std::string::npos);
+  const std::string normalmap = "<bsdf type=\"normalmap\">" + kNormal + kDiffuse + "</bsdf>";
+  EXPECT_NE(error_of("<bsdf type=\"normalmap\">" + kNormal + normalmap + "</bsdf>")
+                .find("nested normalmaps are not supported"),
+            std::string::npos);
+  EXPECT_NE(error_of("<bsdf type=\"blendbsdf\"><float name=\"weight\" value=\"0.5\"/>" + normalmap +
+                     kDiffuse + "</bsdf>")
+                .find("a normalmap inside a blendbsdf is not supported"),
+            std::string::npos);
+  EXPECT_NE(error_of("<bsdf type=\"mask\">" + normalmap + "</bsdf>")
+                .find("around a normalmap is not supported"),
             std::string::npos);
 }
 

@@ -185,6 +185,16 @@ Material blend(const Material& bsdf_0, const Material& bsdf_1, float weight) {
   return m;
 }
 
+Material normalmap(const Material& bsdf, vec3 normal, bool flip_invalid_normals,
+                   bool use_shadowing_function) {
+  Material m = blank(BSDF_NORMALMAP);
+  m.param[NORMALMAP_NORMALMAP] = constant((normal + vec3(1.0f)) * 0.5f);
+  m.param[NORMALMAP_BSDF] = constant(vec3(float(add_material(bsdf))));
+  m.param[NORMALMAP_OPTIONS] = constant(
+      vec3(flip_invalid_normals ? 1.0f : 0.0f, use_shadowing_function ? 1.0f : 0.0f, 0.0f));
+  return m;
+}
+
 bool bsdf_available(const Material& m) { return (bsdf_flags(m, kUv) & ~BSDF_NULL) != 0u; }
 
 bool bsdf_type_available(uint type) {
