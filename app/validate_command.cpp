@@ -210,7 +210,17 @@ SceneOutcome validate_scene(const SuiteEntry& e, const ValidateArgs& a, const fs
             {"GPU", seconds_text(gpu.result.stats.seconds) + ", " + gpu.result.device});
         o.comparisons.push_back(against_reference("GPU vs Mitsuba reference", gpu, o.spp, e, ref,
                                                   var, stem + "_gpu_ref"));
-        o.comparisons.push_back(between_backends(gpu, cpu, o.spp, stem + "_gpu_cpu"));
+        if (e.lockstep_spp == 0) {
+          o.comparisons.push_back(between_backends(gpu, cpu, o.spp, stem + "_gpu_cpu"));
+        } else {
+          SceneRender gpu_ls =
+              render_scene(run_backend, "gpu", scene, e.lockstep_spp, seed, a.threads);
+          SceneRender cpu_ls =
+              render_scene(run_backend, "cpu", scene, e.lockstep_spp, seed, a.threads);
+          o.scene.facts.push_back({"lockstep spp", std::to_string(e.lockstep_spp)});
+          o.comparisons.push_back(
+              between_backends(gpu_ls, cpu_ls, e.lockstep_spp, stem + "_gpu_cpu"));
+        }
       } catch (const BackendUnavailable& ex) {
         if (a.gpu == GpuMode::required) throw;
         o.scene.facts.push_back({"GPU", std::string("not available: ") + ex.what()});

@@ -9,6 +9,9 @@
 //     weight 1, pdf 1 - alpha) with probability 1 - alpha, else samples the nested BSDF with
 //     u1 rescaled to [0, 1) (pdf times alpha, weight unchanged).
 // The two wrappers commute, so their nesting order in the scene file does not matter.
+// bsdf_leaf_* evaluate such a material; bsdf_tree_* also take Mitsuba `blendbsdf`
+// (core/bsdf/blend.h), a mixture of other materials, possibly blends themselves; the public
+// bsdf_* also take a `normalmap` around such a tree.
 //
 //   bsdf_flags(m, uv)           lobes this material can produce (BSDF_* bits)
 //   bsdf_eval(m, uv, wi, wo)    f(wi, wo) |cos theta_o|, zero for delta lobes
@@ -173,14 +176,14 @@ INLINE float bsdf_opacity(Material m, vec2 uv) {
   return 1.0f;
 }
 
-INLINE uint bsdf_flags(Material m, vec2 uv) {
+INLINE uint bsdf_leaf_flags(Material m, vec2 uv) {
   uint flags = bsdf_base_flags(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
     flags |= BSDF_NULL;
   return flags;
 }
 
-INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_leaf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -188,7 +191,7 @@ INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m, uv);
 }
 
-INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_leaf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -196,7 +199,7 @@ INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m, uv);
 }
 
-INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_leaf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   float opacity = bsdf_opacity(m, uv);
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
@@ -234,6 +237,102 @@ INLINE vec3 bsdf_diffuse_reflectance(Material m, vec2 uv, vec3 wi) {
       break;
   }
   return PI * bsdf_base_eval(m, uv, wi, vec3(0.0f, 0.0f, 1.0f));
+}
+
+TR_NAMESPACE_END
+
+#include "core/bsdf/blend.h"
+#include "core/bsdf/normalmap.h"
+
+TR_NAMESPACE_BEGIN
+
+INLINE uint bsdf_tree_flags(Material m, vec2 uv) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_flags(m, uv);
+  return bsdf_leaf_flags(m, uv);
+}
+
+INLINE vec3 bsdf_tree_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_eval(m, uv, wi, wo);
+  return bsdf_leaf_eval(m, uv, wi, wo);
+}
+
+INLINE float bsdf_tree_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_pdf(m, uv, wi, wo);
+  return bsdf_leaf_pdf(m, uv, wi, wo);
+}
+
+INLINE BsdfSample bsdf_tree_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_sample(m, uv, wi, u1, u2);
+  return bsdf_leaf_sample(m, uv, wi, u1, u2);
+}
+
+// The public interface: a `normalmap` (core/bsdf/normalmap.h) at the root perturbs wi and wo
+// (after its own `twosided`, if any) and scales the tree below it.
+INLINE bool bsdf_is_normalmap(Material m) {
+  return TR_HAS_BSDF(BSDF_NORMALMAP) && m.type == BSDF_NORMALMAP;
+}
+
+INLINE uint bsdf_flags(Material m, vec2 uv) {
+  if (bsdf_is_normalmap(m)) m = scene_material(normalmap_child(m));
+  return bsdf_tree_flags(m, uv);
+}
+
+INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  float scale = 1.0f;
+  if (bsdf_is_normalmap(m)) {
+    if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+      wo.z = mulsign(wo.z, wi.z);
+      wi.z = abs(wi.z);
+    }
+    Frame f = normalmap_frame(m, uv, wi);
+    vec3 wo_perturbed = frame_to_local(f, wo);
+    if (!(wo.z * wo_perturbed.z > 0.0f)) return vec3(0.0f);
+    if (normalmap_shadowing(m)) scale = normalmap_shadow_terminator(f.n, wo);
+    wi = frame_to_local(f, wi);
+    wo = wo_perturbed;
+    m = scene_material(normalmap_child(m));
+  }
+  return bsdf_tree_eval(m, uv, wi, wo) * scale;
+}
+
+INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (bsdf_is_normalmap(m)) {
+    if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+      wo.z = mulsign(wo.z, wi.z);
+      wi.z = abs(wi.z);
+    }
+    Frame f = normalmap_frame(m, uv, wi);
+    vec3 wo_perturbed = frame_to_local(f, wo);
+    if (!(wo.z * wo_perturbed.z > 0.0f)) return 0.0f;
+    wi = frame_to_local(f, wi);
+    wo = wo_perturbed;
+    m = scene_material(normalmap_child(m));
+  }
+  return bsdf_tree_pdf(m, uv, wi, wo);
+}
+
+INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  bool normalmap = bsdf_is_normalmap(m);
+  float wi_z = wi.z;
+  bool twosided = normalmap && (m.flags & MATERIAL_TWOSIDED) != 0u;
+  if (twosided) wi.z = abs(wi.z);
+  Frame f = frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
+  bool shadowing = false;
+  if (normalmap) {
+    f = normalmap_frame(m, uv, wi);
+    shadowing = normalmap_shadowing(m);
+    wi = frame_to_local(f, wi);
+    m = scene_material(normalmap_child(m));
+  }
+  BsdfSample s = bsdf_tree_sample(m, uv, wi, u1, u2);
+  if (normalmap) {
+    vec3 wo = frame_to_world(f, s.wo);
+    if (!(s.wo.z * wo.z > 0.0f) || all(equal(s.weight, vec3(0.0f)))) return bsdf_sample_failed();
+    if (shadowing) s.weight *= normalmap_shadow_terminator(f.n, wo);
+    s.wo = wo;
+    if (twosided) s.wo.z = mulsign(s.wo.z, wi_z);
+  }
+  return s;
 }
 
 TR_NAMESPACE_END

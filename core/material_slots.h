@@ -51,6 +51,18 @@ const uint PRINCIPLED_SPEC_TRANS = 10u;
 //          clearcoat_sampling_rate), never textured
 const uint PRINCIPLED_SAMPLING_RATES = 11u;
 
+// blendbsdf: weight (scalar texture); child material indices in value.x (exact as floats)
+const uint BLEND_WEIGHT = 0u;
+const uint BLEND_BSDF_0 = 1u;
+const uint BLEND_BSDF_1 = 2u;
+const uint BLEND_MAX_DEPTH = 7u;  // levels of nested blends (core/bsdf/blend.h's stack)
+
+// normalmap: the normal texture (RGB, n = 2 rgb - 1); the child material index in value.x;
+// value = (flip_invalid_normals, use_shadowing_function, 0) as 0 / 1, never textured
+const uint NORMALMAP_NORMALMAP = 0u;
+const uint NORMALMAP_BSDF = 1u;
+const uint NORMALMAP_OPTIONS = 2u;
+
 TR_NAMESPACE_END
 
 #endif

@@ -3,6 +3,7 @@
 // src/textures/*.cpp; tests/scenes/plugin_defaults_test.cpp pins them).
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/bsdf/roughplastic.h"
@@ -102,11 +103,19 @@ bool has_transmission(Node& bsdf) {
   if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric" || t == "mask")
     return true;
   if (t == "principled") return principled_has_spec_trans(bsdf);
-  if (t == "twosided")
+  if (t == "twosided" || t == "blendbsdf" || t == "normalmap")
     for (Property& p : bsdf.props)
       if (p.kind == PropertyKind::Object && p.object->tag == "bsdf" && has_transmission(*p.object))
         return true;
   return false;
+}
+
+// Levels of blends in the tree rooted at a material (0 for any other BSDF).
+uint blend_depth(const std::vector<Material>& materials, const Material& m) {
+  if (m.type != BSDF_BLEND) return 0u;
+  uint d0 = blend_depth(materials, materials[uint(m.param[BLEND_BSDF_0].value.x)]);
+  uint d1 = blend_depth(materials, materials[uint(m.param[BLEND_BSDF_1].value.x)]);
+  return 1u + std::max(d0, d1);
 }
 
 }  // namespace
@@ -431,6 +440,9 @@ Material SceneBuilder::build_material(Node& n) {
       fail(n.loc, describe(n), ": the nested ", describe(*inner[0]->object),
            " transmits light; Mitsuba accepts it only with allow_transmission = true");
     m = build_material(*inner[0]->object);
+    if (type == "mask" && (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP))
+      fail(n.loc, describe(n), " around a ", m.type == BSDF_BLEND ? "blendbsdf" : "normalmap",
+           " is not supported");
     if (type == "twosided") {
       // A nested twosided is the identity here: wi is already on the front side.
       m.flags |= MATERIAL_TWOSIDED;
@@ -439,10 +451,45 @@ Material SceneBuilder::build_material(Node& n) {
       m.flags |= MATERIAL_MASKED;
       m.opacity = opacity;
     }
+  } else if (type == "blendbsdf") {
+    // Mitsuba 3.8 src/bsdfs/blendbsdf.cpp: exactly two nested BSDFs and a required `weight`.
+    std::vector<Property*> inner = take_objects(n, "bsdf");
+    if (inner.size() != 2)
+      fail(inner.size() > 2 ? inner[2]->loc : n.loc, describe(n),
+           " takes exactly two nested BSDFs (it has ", inner.size(), ")");
+    if (!has_property(n, "weight")) fail(n.loc, describe(n), " needs a 'weight'");
+    m = empty_material(BSDF_BLEND);
+    m.param[BLEND_WEIGHT] = textured(n, "weight", glm::dvec3(0.5), true);
+    m.param[BLEND_BSDF_0] = constant_value(glm::dvec3(material(*inner[0]->object)));
+    m.param[BLEND_BSDF_1] = constant_value(glm::dvec3(material(*inner[1]->object)));
+    for (uint slot : {BLEND_BSDF_0, BLEND_BSDF_1})
+      if (b_.materials[uint(m.param[slot].value.x)].type == BSDF_NORMALMAP)
+        fail(n.loc, describe(n), ": a normalmap inside a blendbsdf is not supported");
+    if (blend_depth(b_.materials, m) > BLEND_MAX_DEPTH)
+      fail(n.loc, describe(n), ": blendbsdfs nested more than ", BLEND_MAX_DEPTH,
+           " deep are not supported");
+  } else if (type == "normalmap") {
+    // Mitsuba 3.8 src/bsdfs/normalmap.cpp: one nested BSDF, a required `normalmap` texture.
+    std::vector<Property*> inner = take_objects(n, "bsdf");
+    if (inner.size() != 1)
+      fail(inner.size() > 1 ? inner[1]->loc : n.loc, describe(n),
+           " takes exactly one nested BSDF (it has ", inner.size(), ")");
+    if (!has_property(n, "normalmap")) fail(n.loc, describe(n), " needs a 'normalmap' texture");
+    m = empty_material(BSDF_NORMALMAP);
+    m.param[NORMALMAP_NORMALMAP] = textured(n, "normalmap", glm::dvec3(0.5, 0.5, 1.0), false);
+    bool flip = take_bool(n, "flip_invalid_normals", true);
+    bool shadowing = take_bool(n, "use_shadowing_function", true);
+    m.param[NORMALMAP_OPTIONS] =
+        constant_value(glm::dvec3(flip ? 1.0 : 0.0, shadowing ? 1.0 : 0.0, 0.0));
+    uint child = material(*inner[0]->object);
+    if (b_.materials[child].type == BSDF_NORMALMAP)
+      fail(inner[0]->loc, describe(n), ": nested normalmaps are not supported");
+    m.param[NORMALMAP_BSDF] = constant_value(glm::dvec3(child));
   } else {
     fail(n.loc, "unknown BSDF type \"", type,
          "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-         "thindielectric, plastic, roughplastic, pplastic, principled, twosided, mask)");
+         "thindielectric, plastic, roughplastic, pplastic, principled, twosided, mask, "
+         "blendbsdf, normalmap)");
   }
   check_consumed(n);
   return m;

@@ -32,6 +32,9 @@ struct StatisticalCase {
   // tends to 1, the albedo exceeds 1 (measured: 1.07 with sheen = 1 and 1.25 with specular = 1,
   // roughness = 0.1 at 85°). The albedo test is therefore not applied to it.
   bool energy_conserving = true;
+  // false for Mitsuba's normalmap: its flipping (by wi) and shadowing term (by wo) break
+  // Helmholtz reciprocity.
+  bool reciprocal = true;
 };
 
 struct ExtremesCase {

@@ -202,13 +202,14 @@ ProbeResult GpuCoreCalls::query(const ProbeQuery& q, Cpu cpu) {
 
 uint GpuCoreCalls::material_index(const Material& m) {
   // A check asks about one material at a time.
-  if (!materials_.empty() && std::memcmp(&materials_[last_material_], &m, sizeof(Material)) == 0)
+  const std::vector<Material>& materials = bsdf_suite::local_materials();
+  if (last_material_ < materials.size() &&
+      std::memcmp(&materials[last_material_], &m, sizeof(Material)) == 0)
     return last_material_;
   std::string bytes(reinterpret_cast<const char*>(&m), sizeof(Material));
   auto it = material_indices_.find(bytes);
   if (it == material_indices_.end()) {
-    materials_.push_back(m);
-    it = material_indices_.emplace(bytes, uint(materials_.size() - 1)).first;
+    it = material_indices_.emplace(bytes, bsdf_suite::add_material(m)).first;
   }
   last_material_ = it->second;
   return last_material_;
@@ -284,7 +285,8 @@ vec3 GpuCoreCalls::bsdf_eval(const Material& m, vec2 uv, vec3 wi, vec3 wo) {
 
 void GpuCoreCalls::evaluate_misses() {
   auto start = std::chrono::steady_clock::now();
-  ProbeScene scene{&materials_, &bsdf_suite::local_textures(), &bsdf_suite::local_texels()};
+  ProbeScene scene{&bsdf_suite::local_materials(), &bsdf_suite::local_textures(),
+                   &bsdf_suite::local_texels()};
   const std::size_t first = queries_.size();
   if (first + misses_.size() >= kNone) throw std::runtime_error("too many queries in one check");
   results_.resize(first + misses_.size());

@@ -76,7 +76,7 @@ class GpuCoreCalls : public bsdf_suite::CoreCalls {
   void evaluate_misses();
 
   ProbeDevice& device_;
-  std::vector<Material> materials_;
+  // Materials live in tests/bsdf's local store (with the children of blends).
   std::map<std::string, uint> material_indices_;  // by the record's bytes
   uint last_material_ = 0;
 

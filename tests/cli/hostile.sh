@@ -95,6 +95,10 @@ lit inf_translate '<shape type="sphere"><transform name="to_world"><translate x=
 scene nan_radiance '<shape type="sphere"/><emitter type="constant"><rgb name="radiance" value="nan, 1, 1"/></emitter>'
 scene negative_radiance '<shape type="sphere"/><emitter type="constant"><rgb name="radiance" value="-1, 1, 1"/></emitter>'
 lit negative_reflectance '<shape type="sphere"><bsdf type="diffuse"><rgb name="reflectance" value="-0.5"/></bsdf></shape>'
+lit blend_no_weight '<shape type="sphere"><bsdf type="blendbsdf"><bsdf type="diffuse"/><bsdf type="conductor"/></bsdf></shape>'
+lit blend_one_child '<shape type="sphere"><bsdf type="blendbsdf"><float name="weight" value="0.5"/><bsdf type="diffuse"/></bsdf></shape>'
+lit normalmap_no_texture '<shape type="sphere"><bsdf type="normalmap"><bsdf type="diffuse"/></bsdf></shape>'
+lit normalmap_in_blend '<shape type="sphere"><bsdf type="blendbsdf"><float name="weight" value="0.5"/><bsdf type="normalmap"><rgb name="normalmap" value="0.5, 0.5, 1"/><bsdf type="diffuse"/></bsdf><bsdf type="diffuse"/></bsdf></shape>'
 lit zero_width '<shape type="sphere"/>'
 sed -i 's/name="width" value="8"/name="width" value="0"/' "$d/zero_width.xml"
 lit overflow_size '<shape type="sphere"/>'
@@ -179,6 +183,10 @@ check inf_transform 3 'inf_translate\.xml:[0-9]+: ' -- $(r inf_translate)
 check nan_radiance 3 'nan_radiance\.xml:[0-9]+: .*radiance' -- $(r nan_radiance)
 check negative_radiance 3 'negative_radiance\.xml:[0-9]+: .*radiance' -- $(r negative_radiance)
 check negative_reflectance 3 'negative_reflectance\.xml:[0-9]+: .*reflectance' -- $(r negative_reflectance)
+check blend_no_weight 3 'blend_no_weight\.xml:[0-9]+: .*blendbsdf.*weight' -- $(r blend_no_weight)
+check blend_one_child 3 'blend_one_child\.xml:[0-9]+: .*two nested BSDFs' -- $(r blend_one_child)
+check normalmap_no_texture 3 'normalmap_no_texture\.xml:[0-9]+: .*normalmap' -- $(r normalmap_no_texture)
+check normalmap_in_blend 3 'normalmap_in_blend\.xml:[0-9]+: .*normalmap inside a blendbsdf' -- $(r normalmap_in_blend)
 check zero_width 3 'zero_width\.xml:[0-9]+: .*width' -- $(r zero_width)
 check overflowing_size 3 'overflow_size\.xml:[0-9]+: .*width' -- $(r overflow_size)
 check size_beyond_memory 3 'huge_size\.xml:[0-9]+: .*GiB of memory' -- $(r huge_size)

@@ -121,7 +121,7 @@ TEST(AovLoader, Refusals) {
             std::string::npos);
   EXPECT_NE(error_of(aov("dd:dp_du"), "aovs").find("\"dp_du\" is not supported by twinray"),
             std::string::npos);
-  for (const std::string& bad : {"depth", ":depth", "dd:", "dd:depth:x", "dd"})
+  for (const std::string bad : {"depth", ":depth", "dd:", "dd:depth:x", "dd"})
     EXPECT_NE(error_of(aov(bad), "aovs").find("invalid AOV \"" + bad + "\""), std::string::npos)
         << bad;
   EXPECT_NE(error_of(aov("a:depth,a:depth"), "aovs").find("duplicate channel name \"a.T\""),

@@ -84,6 +84,9 @@ std::vector<SuiteEntry> read_suite(const std::string& path) {
         if (value != "auto" && e.spp == 0) throw SuiteError(where + ": spp must be positive");
       } else if (key == "seed") {
         e.seed = parse_count(where, key, value);
+      } else if (key == "lockstep_spp") {
+        e.lockstep_spp = parse_count(where, key, value);
+        if (e.lockstep_spp == 0) throw SuiteError(where + ": lockstep_spp must be positive");
       } else if (key == "define") {
         size_t eq2 = value.find('=');
         if (eq2 == std::string::npos || eq2 == 0)

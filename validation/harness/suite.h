@@ -11,6 +11,12 @@
 //   spp=N|auto           samples per pixel to render; auto = floor(2e6 / (width * height)),
 //                        the sample budget of shared/mitsuba-tests/README.md (default auto)
 //   seed=N               sampler seed (default: the scene's sampler `seed`)
+//   lockstep_spp=N       compare the CPU and GPU backends on renders of N spp of their own
+//                        (default: the renders judged against the reference). Lockstep asks
+//                        every sample of a pixel to follow the same path on both; a scene whose
+//                        paths branch on textured values (a blend weight, a normal map's
+//                        horizon) diverges by float rounding in a few samples per 10^5, so at
+//                        hundreds of spp more than 1% of its pixels hold one such sample.
 //   define=NAME=VALUE    a scene <default> override (like render -D); may repeat
 #pragma once
 
@@ -34,6 +40,7 @@ struct SuiteEntry {
   double reference_spp = 0.0;
   std::uint32_t spp = 0;              // 0: auto
   std::optional<std::uint32_t> seed;  // unset: the scene's sampler seed
+  std::uint32_t lockstep_spp = 0;     // 0: the spp of the reference comparison
   std::map<std::string, std::string> defines;
 };
 

@@ -188,9 +188,31 @@ Material masked(Material m, float opacity) {
   return m;
 }
 
+Material blend(const Material& bsdf_0, const Material& bsdf_1, float weight) {
+  Material m = blank(BSDF_BLEND);
+  m.param[BLEND_WEIGHT] = constant(vec3(weight));
+  m.param[BLEND_BSDF_0] = constant(vec3(float(add_material(bsdf_0))));
+  m.param[BLEND_BSDF_1] = constant(vec3(float(add_material(bsdf_1))));
+  return m;
+}
+
+Material normalmap(const Material& bsdf, vec3 normal, bool flip_invalid_normals,
+                   bool use_shadowing_function) {
+  Material m = blank(BSDF_NORMALMAP);
+  m.param[NORMALMAP_NORMALMAP] = constant((normal + vec3(1.0f)) * 0.5f);
+  m.param[NORMALMAP_BSDF] = constant(vec3(float(add_material(bsdf))));
+  m.param[NORMALMAP_OPTIONS] = constant(
+      vec3(flip_invalid_normals ? 1.0f : 0.0f, use_shadowing_function ? 1.0f : 0.0f, 0.0f));
+  return m;
+}
+
 bool bsdf_available(const Material& m) { return (bsdf_flags(m, kUv) & ~BSDF_NULL) != 0u; }
 
-bool bsdf_type_available(uint type) { return bsdf_available(blank(type)); }
+bool bsdf_type_available(uint type) {
+  if (type == BSDF_BLEND)
+    return bsdf_available(blend(diffuse(vec3(0.5f)), diffuse(vec3(0.5f)), 0.5f));
+  return bsdf_available(blank(type));
+}
 
 namespace {
 

@@ -49,6 +49,11 @@ Material principled(const PrincipledParameters& p);
 
 Material twosided(Material m);
 Material masked(Material m, float opacity);
+// blendbsdf (1 - weight) bsdf_0 + weight bsdf_1; the children go to the local material store.
+Material blend(const Material& bsdf_0, const Material& bsdf_1, float weight);
+// normalmap around bsdf with a constant normal (stored as Mitsuba's texture value (n + 1) / 2).
+Material normalmap(const Material& bsdf, vec3 normal, bool flip_invalid_normals,
+                   bool use_shadowing_function);
 
 // Whether core/bsdf.h dispatches this material's type (its flags are non-zero).
 bool bsdf_available(const Material& m);

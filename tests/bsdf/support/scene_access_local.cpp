@@ -1,6 +1,7 @@
 // core/scene_access.h for the BSDF validation suite: materials, textures and texels come from
 // small local vectors (constant parameters everywhere; textures only for roughplastic's
-// precomputed table); everything else is out of scope here and throws.
+// precomputed table; materials for the children of blends); everything else is out of scope
+// here and throws.
 #include "scene_access_local.h"
 
 #include <stdexcept>
@@ -31,6 +32,12 @@ uint add_texture(Texture t, const std::vector<vec4>& new_texels) {
   return uint(textures.size() - 1);
 }
 
+uint add_material(const Material& m) {
+  materials.push_back(m);
+  return uint(materials.size() - 1);
+}
+
+const std::vector<Material>& local_materials() { return materials; }
 const std::vector<Texture>& local_textures() { return textures; }
 const std::vector<vec4>& local_texels() { return texels; }
 
