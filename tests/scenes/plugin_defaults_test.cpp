@@ -143,8 +143,7 @@ TEST(PluginDefaults, ShapeWithoutBsdf) {
   const std::string grey = "<bsdf type=\"diffuse\"/>";
   const std::string black = "<bsdf type=\"diffuse\">" + rgb("reflectance", "0") + "</bsdf>";
   check({"shape", "<shape type=\"sphere\">%P%</shape>", {grey}, black});
-  check({"luminaire", "<shape type=\"sphere\"><emitter type=\"area\"/>%P%</shape>", {black},
-         grey});
+  check({"luminaire", "<shape type=\"sphere\"><emitter type=\"area\"/>%P%</shape>", {black}, grey});
 }
 
 TEST(PluginDefaults, Conductors) {
