@@ -27,6 +27,9 @@ uint scene_index(uint index);
 // memory and indexed there cost the GPU backend three quarters of its throughput.
 float scene_filter_table(uint i);
 float scene_filter_cdf(uint k);
+// The type of the `aov` integrator's output variable i (Integrator.aov_types), read in place
+// for the same reason.
+uint scene_aov_type(uint i);
 
 TR_NAMESPACE_END
 
