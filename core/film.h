@@ -35,53 +35,48 @@
 #define TWINRAY_CORE_FILM_H
 
 #include "core/rfilter.h"
+#include "core/scene_access.h"
 
 TR_NAMESPACE_BEGIN
 
-INLINE float filter_table_value(const vec4 table[8], uint i) { return table[i >> 2u][i & 3u]; }
-
 // The bins of one axis, in order of x: bin k in [0, 62) covers [-r + k h, -r + (k + 1) h),
 // h = r / 31, and holds table entry 30 - k (k < 31) or k - 31. Camera.filter_cdf[k] is the
-// mass of |f_d| before bin k (k = 0 .. 62), filled by the loader (filter_cdf_entry).
+// mass of |f_d| before bin k (k = 0 .. 62), filled by the loader (filter_cdf_entry). Both
+// tables are the scene camera's (scene_filter_table, scene_filter_cdf).
 INLINE uint filter_bin_entry(uint k) {
   return k < FILTER_RESOLUTION ? FILTER_RESOLUTION - 1u - k : k - FILTER_RESOLUTION;
 }
 
-INLINE float filter_cdf_value(const vec4 cdf[16], uint k) { return cdf[k >> 2u][k & 3u]; }
-
-// M(x): the mass of |f_d| on [-r, x], for the table and cumulative masses of a filter of
-// radius r.
-INLINE float filter_cumulative(const vec4 table[8], const vec4 cdf[16], float r, float x) {
+// M(x): the mass of |f_d| on [-r, x], for the camera's filter of radius r.
+INLINE float filter_cumulative(float r, float x) {
   float h = r / float(FILTER_RESOLUTION);
   float t = clamp(x, -r, r);
   uint k = min(uint((t + r) / h), 2u * FILTER_RESOLUTION - 1u);
   float start = -r + float(k) * h;
-  return filter_cdf_value(cdf, k) +
-         abs(filter_table_value(table, filter_bin_entry(k))) * max(t - start, 0.0f);
+  return scene_filter_cdf(k) + abs(scene_filter_table(filter_bin_entry(k))) * max(t - start, 0.0f);
 }
 
 // One axis: an offset x in [lo, hi) from the pixel centre with density proportional to
 // |f_d(x)| there, and the sign of f_d(x), by inverting M between M(lo) and M(hi): the bin is
 // the last one whose start mass is <= the target (never an empty one), x is linear within it.
-INLINE float sample_filter_axis(const vec4 table[8], const vec4 cdf[16], float r, float u, float lo,
-                                float hi, OUT(float) sign) {
-  float m_lo = filter_cumulative(table, cdf, r, lo);
-  float target = m_lo + u * (filter_cumulative(table, cdf, r, hi) - m_lo);
+INLINE float sample_filter_axis(float r, float u, float lo, float hi, OUT(float) sign) {
+  float m_lo = filter_cumulative(r, lo);
+  float target = m_lo + u * (filter_cumulative(r, hi) - m_lo);
   const uint last = 2u * FILTER_RESOLUTION;
   uint k = 0u;
   for (uint step = 32u; step > 0u; step >>= 1u)
-    if (k + step <= last && filter_cdf_value(cdf, k + step) <= target) k += step;
+    if (k + step <= last && scene_filter_cdf(k + step) <= target) k += step;
   k = min(k, last - 1u);
   float h = r / float(FILTER_RESOLUTION);
   float start = -r + float(k) * h;
-  float f = filter_table_value(table, filter_bin_entry(k));
-  float x = abs(f) > 0.0f ? start + (target - filter_cdf_value(cdf, k)) / abs(f) : start;
+  float f = scene_filter_table(filter_bin_entry(k));
+  float x = abs(f) > 0.0f ? start + (target - scene_filter_cdf(k)) / abs(f) : start;
   sign = f < 0.0f ? -1.0f : 1.0f;
   return clamp(x, max(start, lo), min(start + h, hi));
 }
 
 // Position on the film (full-film pixels) of a sample of `pixel` (crop-window pixels) and its
-// sign in the pixel's self-normalized estimate.
+// sign in the pixel's self-normalized estimate; `c` is the scene's camera.
 INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) sign) {
   vec2 center = c.crop_offset + vec2(pixel) + vec2(0.5f);
   if (c.rfilter == RFILTER_BOX) {
@@ -92,8 +87,8 @@ INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) sign)
   vec2 hi = c.sample_max - center;
   float sx;
   float sy;
-  float x = sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.x, lo.x, hi.x, sx);
-  float y = sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.y, lo.y, hi.y, sy);
+  float x = sample_filter_axis(c.filter_radius, u.x, lo.x, hi.x, sx);
+  float y = sample_filter_axis(c.filter_radius, u.y, lo.y, hi.y, sy);
   sign = sx * sy;
   return center + vec2(x, y);
 }

@@ -48,7 +48,7 @@ void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count,
       for (uint k = 0; k < it.aov_count; ++k) {
         FilmMoments& am = aovs[k];
         add_sample(integrator_negative(s) ? am.negative : am.positive,
-                   aov_value(aov_type(it, k), a));
+                   aov_value(scene_aov_type(k), a));
       }
     }
     while (integrator_alive(s)) {

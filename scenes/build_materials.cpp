@@ -289,15 +289,17 @@ TexturedValue SceneBuilder::textured(Node& owner, const std::string& name, glm::
   return constant_value(c);
 }
 
-uint SceneBuilder::default_material() {
-  if (default_material_ == NO_INDEX) {
-    // Mitsuba: a shape without a BSDF gets a diffuse BSDF of reflectance 0.5.
+uint SceneBuilder::default_material(bool emitter) {
+  // Mitsuba 3.8 (shape.cpp): a shape without a BSDF gets a diffuse BSDF of reflectance 0.5, or
+  // of reflectance 0 when it carries an area emitter (a luminaire reflects nothing).
+  uint& index = emitter ? default_luminaire_material_ : default_material_;
+  if (index == NO_INDEX) {
     Material m = empty_material(BSDF_DIFFUSE);
-    m.param[DIFFUSE_REFLECTANCE] = constant_value(glm::dvec3(0.5));
-    default_material_ = uint(b_.materials.size());
+    m.param[DIFFUSE_REFLECTANCE] = constant_value(glm::dvec3(emitter ? 0.0 : 0.5));
+    index = uint(b_.materials.size());
     b_.materials.push_back(m);
   }
-  return default_material_;
+  return index;
 }
 
 uint SceneBuilder::material(Node& bsdf) {

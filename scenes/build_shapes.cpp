@@ -109,10 +109,9 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
 
   std::vector<Property*> bsdfs = take_objects(n, "bsdf");
   if (bsdfs.size() > 1) fail(bsdfs[1]->loc, describe(n), " has more than one BSDF");
-  r.material = bsdfs.empty() ? default_material() : material(*bsdfs[0]->object);
-
   std::vector<Property*> emitters = take_objects(n, "emitter");
   if (emitters.size() > 1) fail(emitters[1]->loc, describe(n), " has more than one emitter");
+  r.material = bsdfs.empty() ? default_material(!emitters.empty()) : material(*bsdfs[0]->object);
   if (!emitters.empty()) {
     Node& e = *emitters[0]->object;
     if (in_group) fail(e.loc, "emitters inside a <shapegroup> are not supported");

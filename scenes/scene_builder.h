@@ -49,8 +49,9 @@ class SceneBuilder {
   std::map<std::pair<const Node*, bool>, uint> texture_cache_;
   std::map<std::string, std::pair<uint, glm::uvec2>> texel_cache_;
   uint default_material_ = NO_INDEX;
+  uint default_luminaire_material_ = NO_INDEX;
   uint material(Node& bsdf);
-  uint default_material();
+  uint default_material(bool emitter);
   Material build_material(Node& bsdf);
   Material build_principled(Node& bsdf);
   Material build_pplastic(Node& bsdf);

@@ -31,5 +31,8 @@ vec3 scene_position(uint v) { return g_positions[v].xyz; }
 vec3 scene_normal(uint v) { return g_normals[v].xyz; }
 vec2 scene_uv(uint v) { return g_uvs[v]; }
 uint scene_index(uint i) { return g_indices[i]; }
+float scene_filter_table(uint i) { return g_globals.camera.filter_table[i >> 2u][i & 3u]; }
+uint scene_aov_type(uint i) { return g_globals.integrator.aov_types[i >> 2u][i & 3u]; }
+float scene_filter_cdf(uint k) { return g_globals.camera.filter_cdf[k >> 2u][k & 3u]; }
 
 #endif

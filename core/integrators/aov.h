@@ -8,7 +8,7 @@
 //   if (scene_globals().integrator.aov_count > 0u) {
 //     Hit hit = <closest hit of s.ray right after integrator_begin, or miss_hit()>;
 //     AovPoint a = aov_point(s.ray, hit);
-//     for i < aov_count: <accumulate aov_value(aov_type(it, i), a) like the radiance>
+//     for i < aov_count: <accumulate aov_value(scene_aov_type(i), a) like the radiance>
 //   }
 #ifndef TWINRAY_CORE_INTEGRATORS_AOV_H
 #define TWINRAY_CORE_INTEGRATORS_AOV_H
@@ -23,8 +23,6 @@ struct AovPoint {
   Hit hit;
   SurfaceInteraction si;
 };
-
-INLINE uint aov_type(Integrator it, uint i) { return it.aov_types[i / 4u][i % 4u]; }
 
 INLINE AovPoint aov_point(Ray ray, Hit hit) {
   AovPoint a;

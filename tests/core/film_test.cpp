@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/rng.h"
+#include "film_test_camera.h"
 #include "render/film_moments.h"
 
 namespace tr {
@@ -81,13 +82,16 @@ Camera make_camera(const FilmSetup& f) {
   float border = f.sample_border ? std::ceil(f.radius - 0.5f - 2.0f * 1500.0f * 0x1p-24f) : 0.0f;
   c.sample_min = c.crop_offset - vec2(border);
   c.sample_max = c.crop_offset + vec2(f.crop) + vec2(border);
+  bind_film_test_camera(c);
   return c;
 }
+
+float table_value(const Camera& c, uint i) { return c.filter_table[i / 4][i % 4]; }
 
 // eval_discretized (include/mitsuba/core/rfilter.h), in float like Mitsuba.
 float mitsuba_discretized(const Camera& c, float x) {
   uint index = std::min(uint(std::abs(x * c.filter_scale)), FILTER_RESOLUTION);
-  return filter_table_value(c.filter_table, index);
+  return table_value(c, index);
 }
 
 // Mitsuba's splatting rule for samples at the centres of an m x m grid of cells in each pixel
@@ -137,8 +141,7 @@ double axis_integral(const Camera& c, const FilmSetup& f, double center, double 
     double b = std::min((-double(c.filter_radius) + k * h) + h, hi);
     if (b <= a) continue;
     if (table) {
-      sum +=
-          filter_table_value(c.filter_table, filter_bin_entry(k)) * (G(center + b) - G(center + a));
+      sum += table_value(c, filter_bin_entry(k)) * (G(center + b) - G(center + a));
     } else {
       const int steps = 64;
       for (int i = 0; i < steps; ++i) {
@@ -189,8 +192,7 @@ void axis_expectation(const Camera& c, float lo, float hi, float center,
   for (uint k = 0; k < mass.size(); ++k) {
     double a = std::max((-double(c.filter_radius) + k * h), double(lo));
     double b = std::min((-double(c.filter_radius) + k * h) + h, double(hi));
-    mass[k] =
-        std::max(b - a, 0.0) * std::abs(filter_table_value(c.filter_table, filter_bin_entry(k)));
+    mass[k] = std::max(b - a, 0.0) * std::abs(table_value(c, filter_bin_entry(k)));
     total += mass[k];
   }
   sg.assign(g.size(), 0.0);
@@ -201,8 +203,7 @@ void axis_expectation(const Camera& c, float lo, float hi, float center,
     for (int i = 0; i < 4 && width > 0.0; ++i) {
       float sign;
       const float u = float(start + 0.5 * width * (1.0 + node[i]));
-      const float x =
-          sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u, lo, hi, sign);
+      const float x = sample_filter_axis(c.filter_radius, u, lo, hi, sign);
       s += 0.5 * width * weight[i] * sign;
       for (size_t j = 0; j < g.size(); ++j)
         sg[j] += 0.5 * width * weight[i] * sign * g[j](center + x);
@@ -297,12 +298,10 @@ TEST(FilmEstimator, PositionComposesTheTwoAxes) {
     const vec2 center = c.crop_offset + vec2(pixel) + vec2(0.5f);
     float sign, sign_x, sign_y;
     const vec2 p = sample_film_position(c, pixel, u, sign);
-    const float tx =
-        sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.x,
-                           c.sample_min.x - center.x, c.sample_max.x - center.x, sign_x);
-    const float ty =
-        sample_filter_axis(c.filter_table, c.filter_cdf, c.filter_radius, u.y,
-                           c.sample_min.y - center.y, c.sample_max.y - center.y, sign_y);
+    const float tx = sample_filter_axis(c.filter_radius, u.x, c.sample_min.x - center.x,
+                                        c.sample_max.x - center.x, sign_x);
+    const float ty = sample_filter_axis(c.filter_radius, u.y, c.sample_min.y - center.y,
+                                        c.sample_max.y - center.y, sign_y);
     EXPECT_EQ(p, center + vec2(tx, ty));
     EXPECT_EQ(sign, sign_x * sign_y);
     EXPECT_TRUE(p.x >= c.sample_min.x && p.x <= c.sample_max.x && p.y >= c.sample_min.y &&

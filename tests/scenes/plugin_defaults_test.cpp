@@ -137,6 +137,15 @@ TEST(PluginDefaults, Diffuse) {
          rgb("reflectance", "0.3")});
 }
 
+// Mitsuba 3.8 shape.cpp: a shape without a BSDF is diffuse of reflectance 0.5, a luminaire
+// without one diffuse of reflectance 0.
+TEST(PluginDefaults, ShapeWithoutBsdf) {
+  const std::string grey = "<bsdf type=\"diffuse\"/>";
+  const std::string black = "<bsdf type=\"diffuse\">" + rgb("reflectance", "0") + "</bsdf>";
+  check({"shape", "<shape type=\"sphere\">%P%</shape>", {grey}, black});
+  check({"luminaire", "<shape type=\"sphere\"><emitter type=\"area\"/>%P%</shape>", {black}, grey});
+}
+
 TEST(PluginDefaults, Conductors) {
   for (std::string type : {"conductor", "roughconductor"}) {
     check({type + " material", bsdf(type), {str("material", "none")}, str("material", "Au")});
