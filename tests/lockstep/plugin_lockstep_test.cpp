@@ -14,7 +14,8 @@ TEST_P(PluginLockstep, SixteenSamplesPerPixel) {
   expect_lockstep(GetParam(), load_scene(path, {}), 16, 37);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PluginLockstep, testing::Values("blendbsdf", "normalmap"),
+INSTANTIATE_TEST_SUITE_P(Scenes, PluginLockstep,
+                         testing::Values("blendbsdf", "normalmap", "bumpmap"),
                          [](const testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });

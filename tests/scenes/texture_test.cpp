@@ -79,7 +79,7 @@ TEST(Texture, BilinearGradient) {
   b.textures[0].to_uv[1] = vec4(0, -2, 0.2f, 0);
   g_buffers = &b;
   const float h = 1e-3f;
-  for (vec2 uv : {vec2(0.05f, 0.03f), vec2(0.3f, 0.41f), vec2(0.62f, 0.17f), vec2(0.9f, 0.8f)}) {
+  for (vec2 uv : {vec2(0.07f, 0.03f), vec2(0.3f, 0.41f), vec2(0.62f, 0.17f), vec2(0.9f, 0.8f)}) {
     vec2 g = eval_texture_1_grad(0, uv);
     float du = (eval_texture(0, uv + vec2(h, 0)).x - eval_texture(0, uv - vec2(h, 0)).x) / (2 * h);
     float dv = (eval_texture(0, uv + vec2(0, h)).x - eval_texture(0, uv - vec2(0, h)).x) / (2 * h);
