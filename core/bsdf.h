@@ -242,6 +242,7 @@ INLINE vec3 bsdf_diffuse_reflectance(Material m, vec2 uv, vec3 wi) {
 TR_NAMESPACE_END
 
 #include "core/bsdf/blend.h"
+#include "core/bsdf/bumpmap.h"
 #include "core/bsdf/normalmap.h"
 
 TR_NAMESPACE_BEGIN
@@ -266,25 +267,39 @@ INLINE BsdfSample bsdf_tree_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
   return bsdf_leaf_sample(m, uv, wi, u1, u2);
 }
 
-// The public interface: a `normalmap` (core/bsdf/normalmap.h) at the root perturbs wi and wo
-// (after its own `twosided`, if any) and scales the tree below it.
+// The public interface: a `normalmap` (core/bsdf/normalmap.h) or `bumpmap`
+// (core/bsdf/bumpmap.h) at the root perturbs wi and wo (after its own `twosided`, if any) and
+// scales the tree below it. Both keep their child and options in the same slots. The
+// bsdf_surface_* functions take the surface's differential geometry (bumpmap needs it); the
+// plain ones assume bsdf_surface_flat().
 INLINE bool bsdf_is_normalmap(Material m) {
   return TR_HAS_BSDF(BSDF_NORMALMAP) && m.type == BSDF_NORMALMAP;
 }
 
+INLINE bool bsdf_is_bumpmap(Material m) {
+  return TR_HAS_BSDF(BSDF_BUMPMAP) && m.type == BSDF_BUMPMAP;
+}
+
+INLINE bool bsdf_is_perturbed(Material m) { return bsdf_is_normalmap(m) || bsdf_is_bumpmap(m); }
+
+INLINE Frame bsdf_perturbed_frame(Material m, BsdfSurface g, vec2 uv, vec3 wi) {
+  if (bsdf_is_bumpmap(m)) return bumpmap_frame(m, g, uv, wi);
+  return normalmap_frame(m, uv, wi);
+}
+
 INLINE uint bsdf_flags(Material m, vec2 uv) {
-  if (bsdf_is_normalmap(m)) m = scene_material(normalmap_child(m));
+  if (bsdf_is_perturbed(m)) m = scene_material(normalmap_child(m));
   return bsdf_tree_flags(m, uv);
 }
 
-INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_surface_eval(BsdfSurface g, Material m, vec2 uv, vec3 wi, vec3 wo) {
   float scale = 1.0f;
-  if (bsdf_is_normalmap(m)) {
+  if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
       wo.z = mulsign(wo.z, wi.z);
       wi.z = abs(wi.z);
     }
-    Frame f = normalmap_frame(m, uv, wi);
+    Frame f = bsdf_perturbed_frame(m, g, uv, wi);
     vec3 wo_perturbed = frame_to_local(f, wo);
     if (!(wo.z * wo_perturbed.z > 0.0f)) return vec3(0.0f);
     if (normalmap_shadowing(m)) scale = normalmap_shadow_terminator(f.n, wo);
@@ -295,13 +310,13 @@ INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_tree_eval(m, uv, wi, wo) * scale;
 }
 
-INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
-  if (bsdf_is_normalmap(m)) {
+INLINE float bsdf_surface_pdf(BsdfSurface g, Material m, vec2 uv, vec3 wi, vec3 wo) {
+  if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
       wo.z = mulsign(wo.z, wi.z);
       wi.z = abs(wi.z);
     }
-    Frame f = normalmap_frame(m, uv, wi);
+    Frame f = bsdf_perturbed_frame(m, g, uv, wi);
     vec3 wo_perturbed = frame_to_local(f, wo);
     if (!(wo.z * wo_perturbed.z > 0.0f)) return 0.0f;
     wi = frame_to_local(f, wi);
@@ -311,21 +326,22 @@ INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_tree_pdf(m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
-  bool normalmap = bsdf_is_normalmap(m);
+INLINE BsdfSample bsdf_surface_sample(BsdfSurface g, Material m, vec2 uv, vec3 wi, float u1,
+                                      vec2 u2) {
+  bool perturbed = bsdf_is_perturbed(m);
   float wi_z = wi.z;
-  bool twosided = normalmap && (m.flags & MATERIAL_TWOSIDED) != 0u;
+  bool twosided = perturbed && (m.flags & MATERIAL_TWOSIDED) != 0u;
   if (twosided) wi.z = abs(wi.z);
   Frame f = frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
   bool shadowing = false;
-  if (normalmap) {
-    f = normalmap_frame(m, uv, wi);
+  if (perturbed) {
+    f = bsdf_perturbed_frame(m, g, uv, wi);
     shadowing = normalmap_shadowing(m);
     wi = frame_to_local(f, wi);
     m = scene_material(normalmap_child(m));
   }
   BsdfSample s = bsdf_tree_sample(m, uv, wi, u1, u2);
-  if (normalmap) {
+  if (perturbed) {
     vec3 wo = frame_to_world(f, s.wo);
     if (!(s.wo.z * wo.z > 0.0f) || all(equal(s.weight, vec3(0.0f)))) return bsdf_sample_failed();
     if (shadowing) s.weight *= normalmap_shadow_terminator(f.n, wo);
@@ -333,6 +349,18 @@ INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
     if (twosided) s.wo.z = mulsign(s.wo.z, wi_z);
   }
   return s;
+}
+
+INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  return bsdf_surface_eval(bsdf_surface_flat(), m, uv, wi, wo);
+}
+
+INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  return bsdf_surface_pdf(bsdf_surface_flat(), m, uv, wi, wo);
+}
+
+INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  return bsdf_surface_sample(bsdf_surface_flat(), m, uv, wi, u1, u2);
 }
 
 TR_NAMESPACE_END

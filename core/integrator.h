@@ -64,6 +64,8 @@ INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
   s.anchor.wi = vec3(0.0f, 0.0f, 1.0f);
   s.anchor.pad1 = 0.0f;
   s.anchor.uv = vec2(0.0f);
+  s.anchor.dp_du = vec3(1.0f, 0.0f, 0.0f);
+  s.anchor.dp_dv = vec3(0.0f, 1.0f, 0.0f);
   return s;
 }
 
@@ -79,7 +81,17 @@ INLINE ShadingPoint shading_point(SurfaceInteraction si) {
   sp.wi = si.wi;
   sp.pad1 = 0.0f;
   sp.uv = si.uv;
+  sp.dp_du = si.dp_du;
+  sp.dp_dv = si.dp_dv;
   return sp;
+}
+
+INLINE BsdfSurface bsdf_surface(ShadingPoint sp) {
+  BsdfSurface g;
+  g.dp_du = frame_to_local(sp.frame, sp.dp_du);
+  g.dp_dv = frame_to_local(sp.frame, sp.dp_dv);
+  g.ng = frame_to_local(sp.frame, sp.ng);
+  return g;
 }
 
 // Russian roulette with Mitsuba's survival probability min(max(throughput) eta^2, 0.95);
@@ -163,10 +175,12 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);
-      vec3 f = bsdf_eval(m, sp.uv, sp.wi, wo);
-      float mis = es.delta != 0u ? 1.0f
-                                 : power_heuristic(es.pdf * frac_emitter,
-                                                   bsdf_pdf(m, sp.uv, sp.wi, wo) * frac_bsdf);
+      vec3 f = bsdf_surface_eval(bsdf_surface(sp), m, sp.uv, sp.wi, wo);
+      float mis = es.delta != 0u
+                      ? 1.0f
+                      : power_heuristic(
+                            es.pdf * frac_emitter,
+                            bsdf_surface_pdf(bsdf_surface(sp), m, sp.uv, sp.wi, wo) * frac_bsdf);
       sr.contribution = base * f * es.weight * (mis / n_emitter);
       if (any(notEqual(sr.contribution, vec3(0.0f)))) {
         sr.enabled = 1u;
@@ -181,7 +195,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   s.prev_p = sp.p;
   if (round < uint(n_bsdf)) {
     float u1 = rng_next_1d(s.rng);
-    BsdfSample bs = bsdf_sample(m, sp.uv, sp.wi, u1, rng_next_2d(s.rng));
+    BsdfSample bs = bsdf_surface_sample(bsdf_surface(sp), m, sp.uv, sp.wi, u1, rng_next_2d(s.rng));
     s.ray = spawn_ray(sp.p, sp.ng, frame_to_world(sp.frame, bs.wo));
     s.throughput = base * bs.weight;
     s.eta *= bs.eta;

@@ -25,6 +25,8 @@ struct SurfaceInteraction {
   vec2 uv;
   uint emitter;  // NO_INDEX unless the shape is an area emitter
   uint instance;
+  vec3 dp_du;  // Mitsuba's partial derivatives of the position in uv (world space)
+  vec3 dp_dv;
 };
 
 // Mitsuba's shading frame: s follows dp/du projected onto the tangent plane when the
@@ -76,6 +78,11 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
       if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) n_shading = -n_shading;
     }
     si.uv = vec2(b1, b2);
+    // Without uvs Mitsuba (src/render/mesh.cpp) takes dp/du, dp/dv from coordinate_system of
+    // the face normal before flip_normals.
+    Frame face = frame_from_normal(normalize(cross(p1 - p0, p2 - p0)));
+    si.dp_du = face.s;
+    si.dp_dv = face.t;
     if ((shape.flags & SHAPE_HAS_UVS) != 0u) {
       vec2 uv0 = scene_uv(i0);
       vec2 uv1 = scene_uv(i1);
@@ -86,6 +93,14 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
       vec2 duv12 = uv1 - uv2;
       float det = duv02.x * duv12.y - duv02.y * duv12.x;
       if (abs(det) > 1e-20f) dp_du = (duv12.y * (p0 - p2) - duv02.y * (p1 - p2)) / det;
+      // Mitsuba's dp/du, dp/dv (pbrt-v4 eq. 6.7, edges from vertex 0), when det != 0.
+      vec2 duv0 = uv1 - uv0;
+      vec2 duv1 = uv2 - uv0;
+      float det0 = duv0.x * duv1.y - duv0.y * duv1.x;
+      if (det0 != 0.0f) {
+        si.dp_du = (duv1.y * (p1 - p0) - duv0.y * (p2 - p0)) / det0;
+        si.dp_dv = (duv0.x * (p2 - p0) - duv1.x * (p1 - p0)) / det0;
+      }
     }
   } else {
     vec3 p_inst = ray.o + hit.t * ray.d;
@@ -94,21 +109,43 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
         transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], p_inst);
     vec3 n_local;
     vec3 dp_du_local;
+    vec3 dpdu_local;  // Mitsuba's dp/du, dp/dv in the shape's local space
+    vec3 dpdv_local;
     if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE) {
       local = normalize(local);  // reproject onto the surface, as Mitsuba
       n_local = local;
       si.uv = unit_sphere_uv(local);
       dp_du_local = vec3(-local.y, local.x, 0.0f);
+      // src/shapes/sphere.cpp: 2 pi (-y, x, 0) and pi (z cos phi, z sin phi, -r_xy), with
+      // dp/dv = (1, 0, 0) at the poles.
+      dpdu_local = 2.0f * PI * dp_du_local;
+      float rd = sqrt(local.x * local.x + local.y * local.y);
+      dpdv_local = rd == 0.0f ? vec3(PI, 0.0f, 0.0f)
+                              : PI * vec3(local.z * local.x / rd, local.z * local.y / rd, -rd);
     } else if (TR_HAS_SHAPE(SHAPE_DISK) && shape.type == SHAPE_DISK) {
       local.z = 0.0f;
       n_local = vec3(0.0f, 0.0f, 1.0f);
       si.uv = unit_disk_uv(local);
       dp_du_local = vec3(local.x, local.y, 0.0f);
+      // src/shapes/disk.cpp: (cos phi, sin phi, 0) and (-sin phi, cos phi, 0), phi = 0 at r = 0.
+      float r = sqrt(local.x * local.x + local.y * local.y);
+      vec2 cs = r == 0.0f ? vec2(1.0f, 0.0f) : vec2(local.x, local.y) / r;
+      dpdu_local = vec3(cs.x, cs.y, 0.0f);
+      dpdv_local = vec3(-cs.y, cs.x, 0.0f);
     } else {
       n_local = vec3(local.x, local.y, 0.0f);
       si.uv = unit_cylinder_uv(local);
       dp_du_local = vec3(-local.y, local.x, 0.0f);
+      // src/shapes/cylinder.cpp: 2 pi (-y, x, 0) and (0, 0, 1).
+      dpdu_local = 2.0f * PI * dp_du_local;
+      dpdv_local = vec3(0.0f, 0.0f, 1.0f);
     }
+    si.dp_du =
+        transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dpdu_local);
+    si.dp_du = transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], si.dp_du);
+    si.dp_dv =
+        transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dpdv_local);
+    si.dp_dv = transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], si.dp_dv);
     vec3 p_world = transform_point(shape.to_world[0], shape.to_world[1], shape.to_world[2], local);
     si.p = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], p_world);
     vec3 n = transform_normal(shape.to_object[0], shape.to_object[1], shape.to_object[2], n_local);

@@ -63,6 +63,13 @@ const uint NORMALMAP_NORMALMAP = 0u;
 const uint NORMALMAP_BSDF = 1u;
 const uint NORMALMAP_OPTIONS = 2u;
 
+// bumpmap: the height texture (scalar, read through its uv gradient); the child material index
+// in value.x; value = (flip_invalid_normals, use_shadowing_function, scale), never textured.
+// The child and option slots are normalmap's (core/bsdf.h reads both adapters alike).
+const uint BUMPMAP_HEIGHT = 0u;
+const uint BUMPMAP_BSDF = 1u;
+const uint BUMPMAP_OPTIONS = 2u;
+
 TR_NAMESPACE_END
 
 #endif

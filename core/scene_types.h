@@ -55,6 +55,7 @@ const uint BSDF_PRINCIPLED = 8u;
 const uint BSDF_PPLASTIC = 9u;
 const uint BSDF_BLEND = 10u;      // Mitsuba `blendbsdf`, children by material index
 const uint BSDF_NORMALMAP = 11u;  // Mitsuba `normalmap` around a material (by index)
+const uint BSDF_BUMPMAP = 12u;    // Mitsuba `bumpmap` around a material (by index)
 
 // Material.flags
 const uint MATERIAL_TWOSIDED = 1u;        // Mitsuba `twosided` wrapper

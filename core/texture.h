@@ -72,6 +72,31 @@ INLINE vec3 eval_textured(TexturedValue v, vec2 uv) {
   return v.value;
 }
 
+// Mitsuba's Texture::eval_1_grad of a bitmap (src/textures/bitmap.cpp): the uv gradient of the
+// bilinear interpolation of the (scalar) texels, zero with nearest filtering. Like Mitsuba, the
+// texel-space partials go through the transpose of to_uv's linear part and are then scaled by
+// the resolution per component (exact for diagonal to_uv).
+INLINE vec2 eval_texture_1_grad(uint texture, vec2 uv) {
+  Texture t = scene_texture(texture);
+  if (t.filter_mode == FILTER_NEAREST) return vec2(0.0f);
+  vec2 res = vec2(float(t.width), float(t.height));
+  vec2 pos = texture_apply_to_uv(t, uv) * res - vec2(0.5f);
+  vec2 p0 = floor(pos);
+  vec2 w1 = pos - p0;
+  vec2 w0 = vec2(1.0f) - w1;
+  int i = int(p0.x);
+  int j = int(p0.y);
+  float f00 = texture_texel(t, i, j).x;
+  float f10 = texture_texel(t, i + 1, j).x;
+  float f01 = texture_texel(t, i, j + 1).x;
+  float f11 = texture_texel(t, i + 1, j + 1).x;
+  vec2 df_xy =
+      vec2(w0.y * (f10 - f00) + w1.y * (f11 - f01), w0.x * (f01 - f00) + w1.x * (f11 - f10));
+  vec2 df_uv = vec2(t.to_uv[0].x * df_xy.x + t.to_uv[1].x * df_xy.y,
+                    t.to_uv[0].y * df_xy.x + t.to_uv[1].y * df_xy.y);
+  return res * df_uv;
+}
+
 TR_NAMESPACE_END
 
 #endif

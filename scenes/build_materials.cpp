@@ -103,7 +103,7 @@ bool has_transmission(Node& bsdf) {
   if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric" || t == "mask")
     return true;
   if (t == "principled") return principled_has_spec_trans(bsdf);
-  if (t == "twosided" || t == "blendbsdf" || t == "normalmap")
+  if (t == "twosided" || t == "blendbsdf" || t == "normalmap" || t == "bumpmap")
     for (Property& p : bsdf.props)
       if (p.kind == PropertyKind::Object && p.object->tag == "bsdf" && has_transmission(*p.object))
         return true;
@@ -442,8 +442,12 @@ Material SceneBuilder::build_material(Node& n) {
       fail(n.loc, describe(n), ": the nested ", describe(*inner[0]->object),
            " transmits light; Mitsuba accepts it only with allow_transmission = true");
     m = build_material(*inner[0]->object);
-    if (type == "mask" && (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP))
-      fail(n.loc, describe(n), " around a ", m.type == BSDF_BLEND ? "blendbsdf" : "normalmap",
+    if (type == "mask" &&
+        (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP || m.type == BSDF_BUMPMAP))
+      fail(n.loc, describe(n), " around a ",
+           m.type == BSDF_BLEND       ? "blendbsdf"
+           : m.type == BSDF_NORMALMAP ? "normalmap"
+                                      : "bumpmap",
            " is not supported");
     if (type == "twosided") {
       // A nested twosided is the identity here: wi is already on the front side.
@@ -467,6 +471,8 @@ Material SceneBuilder::build_material(Node& n) {
     for (uint slot : {BLEND_BSDF_0, BLEND_BSDF_1})
       if (b_.materials[uint(m.param[slot].value.x)].type == BSDF_NORMALMAP)
         fail(n.loc, describe(n), ": a normalmap inside a blendbsdf is not supported");
+      else if (b_.materials[uint(m.param[slot].value.x)].type == BSDF_BUMPMAP)
+        fail(n.loc, describe(n), ": a bumpmap inside a blendbsdf is not supported");
     if (blend_depth(b_.materials, m) > BLEND_MAX_DEPTH)
       fail(n.loc, describe(n), ": blendbsdfs nested more than ", BLEND_MAX_DEPTH,
            " deep are not supported");
@@ -484,16 +490,52 @@ Material SceneBuilder::build_material(Node& n) {
     m.param[NORMALMAP_OPTIONS] =
         constant_value(glm::dvec3(flip ? 1.0 : 0.0, shadowing ? 1.0 : 0.0, 0.0));
     uint child = material(*inner[0]->object);
-    if (b_.materials[child].type == BSDF_NORMALMAP)
-      fail(inner[0]->loc, describe(n), ": nested normalmaps are not supported");
+    if (b_.materials[child].type == BSDF_NORMALMAP || b_.materials[child].type == BSDF_BUMPMAP)
+      fail(inner[0]->loc, describe(n),
+           ": a normalmap or bumpmap inside a normalmap is not supported");
     m.param[NORMALMAP_BSDF] = constant_value(glm::dvec3(child));
+  } else if (type == "bumpmap") {
+    m = build_bumpmap(n);
   } else {
     fail(n.loc, "unknown BSDF type \"", type,
          "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
          "thindielectric, plastic, roughplastic, pplastic, principled, twosided, mask, "
-         "blendbsdf, normalmap)");
+         "blendbsdf, normalmap, bumpmap)");
   }
   check_consumed(n);
+  return m;
+}
+
+// Mitsuba 3.8 `bumpmap` (src/bsdfs/bumpmap.cpp): exactly one nested BSDF and one texture of
+// any name (the height), `scale` (1), `flip_invalid_normals` and `use_shadowing_function`
+// (true). Mitsuba reads the height through Texture::eval_1_grad, which 3.8 implements for
+// bitmap (and uniform spectra, which twinray has no texture for); the other textures raise
+// NotImplementedError when rendering, refused here when loading.
+Material SceneBuilder::build_bumpmap(Node& n) {
+  std::vector<Property*> inner = take_objects(n, "bsdf");
+  if (inner.size() != 1)
+    fail(inner.size() > 1 ? inner[1]->loc : n.loc, describe(n),
+         " takes exactly one nested BSDF (it has ", inner.size(), ")");
+  std::vector<Property*> textures = take_objects(n, "texture");
+  if (textures.size() != 1)
+    fail(textures.size() > 1 ? textures[1]->loc : n.loc, describe(n),
+         " takes exactly one nested texture (it has ", textures.size(), ")");
+  Node& height = *textures[0]->object;
+  if (height.type != "bitmap")
+    fail(height.loc, describe(n), ": its height ", describe(height),
+         " has no uv gradient (Mitsuba 3.8 implements eval_1_grad only for bitmap)");
+  Material m = empty_material(BSDF_BUMPMAP);
+  m.param[BUMPMAP_HEIGHT].value = vec3(0.0f);
+  m.param[BUMPMAP_HEIGHT].texture = texture(height, true);
+  bool flip = take_bool(n, "flip_invalid_normals", true);
+  bool shadowing = take_bool(n, "use_shadowing_function", true);
+  double scale = take_float(n, "scale", 1.0);
+  m.param[BUMPMAP_OPTIONS] =
+      constant_value(glm::dvec3(flip ? 1.0 : 0.0, shadowing ? 1.0 : 0.0, scale));
+  uint child = material(*inner[0]->object);
+  if (b_.materials[child].type == BSDF_NORMALMAP || b_.materials[child].type == BSDF_BUMPMAP)
+    fail(inner[0]->loc, describe(n), ": a normalmap or bumpmap inside a bumpmap is not supported");
+  m.param[BUMPMAP_BSDF] = constant_value(glm::dvec3(child));
   return m;
 }
 

@@ -463,9 +463,9 @@ void SceneBuilder::check_aov_albedo() const {
   for (uint i = 0; i < it.aov_count; ++i) albedo |= it.aov_types[i / 4][i % 4] == AOV_ALBEDO;
   if (!albedo) return;
   for (const Material& m : b_.materials)
-    if (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP)
+    if (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP || m.type == BSDF_BUMPMAP)
       fail(aov_loc_,
-           "<integrator type=\"aov\">: the albedo AOV of a blendbsdf or normalmap "
+           "<integrator type=\"aov\">: the albedo AOV of a blendbsdf, normalmap or bumpmap "
            "material is not implemented in twinray yet");
 }
 

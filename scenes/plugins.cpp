@@ -56,7 +56,7 @@ const Entry TABLE[] = {
     {"bsdf", "twosided", PluginSupport::Supported, ""},
     {"bsdf", "mask", PluginSupport::Supported, ""},
     {"bsdf", "normalmap", PluginSupport::Supported, ""},
-    {"bsdf", "bumpmap", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"bsdf", "bumpmap", PluginSupport::Supported, ""},
     {"bsdf", "blendbsdf", PluginSupport::Supported, ""},
     {"bsdf", "pplastic", PluginSupport::Supported, ""},
     {"bsdf", "polarizer", PluginSupport::OutOfScope, POLARIZATION},

@@ -55,6 +55,7 @@ class SceneBuilder {
   Material build_material(Node& bsdf);
   Material build_principled(Node& bsdf);
   Material build_pplastic(Node& bsdf);
+  Material build_bumpmap(Node& bsdf);
   // `distribution`, `sample_visible` and `alpha` or `alpha_u`/`alpha_v` (textures allowed) of
   // roughconductor and roughdielectric, Mitsuba's defaults (beckmann, true, 0.1).
   void microfacet_roughness(Node& bsdf, Material& m, uint slot_u, uint slot_v);

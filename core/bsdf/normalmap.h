@@ -14,6 +14,7 @@
 #define TWINRAY_CORE_BSDF_NORMALMAP_H
 
 #include "core/bsdf/common.h"
+#include "core/bsdf/perturbed_frame.h"
 #include "core/frame.h"
 #include "core/material_slots.h"
 
@@ -26,19 +27,10 @@ INLINE bool normalmap_shadowing(Material m) { return m.param[NORMALMAP_OPTIONS].
 // The perturbed frame relative to the shading frame, for incident direction wi.
 INLINE Frame normalmap_frame(Material m, vec2 uv, vec3 wi) {
   vec3 n = eval_textured(m.param[NORMALMAP_NORMALMAP], uv) * 2.0f - vec3(1.0f);
-  if (m.param[NORMALMAP_OPTIONS].value.x != 0.0f && wi.z * dot(wi, n) <= 0.0f)
-    n = vec3(-n.x, -n.y, n.z);
+  n = perturbed_normal_flipped(n, wi, m.param[NORMALMAP_OPTIONS].value.x != 0.0f);
   float len2 = dot(n, n);
   if (!(len2 > 0.0f)) return frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
-  n *= inversesqrt(len2);
-  vec3 s = vec3(1.0f, 0.0f, 0.0f) - n * n.x;
-  float s_len2 = dot(s, s);
-  if (!(s_len2 > 0.0f)) return frame_from_normal(n);
-  Frame f;
-  f.n = n;
-  f.s = s * inversesqrt(s_len2);
-  f.t = cross(n, f.s);
-  return f;
+  return perturbed_frame(n * inversesqrt(len2), vec3(1.0f, 0.0f, 0.0f));
 }
 
 // Estevez et al.'s shadowing term for the perturbed normal n and wo, both in the shading frame.

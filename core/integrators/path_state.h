@@ -20,6 +20,8 @@ struct ShadingPoint {
   vec3 wi;  // towards the previous vertex, local to frame
   float pad1;
   vec2 uv;
+  vec3 dp_du;  // world space
+  vec3 dp_dv;
 };
 
 struct PathState {

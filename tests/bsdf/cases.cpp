@@ -385,6 +385,46 @@ void add_bsdfs(StatisticalList& list) {
         "normalmap", "twosided(normalmap(diffuse)) n=30deg",
         [=] { return twosided(normalmap(blue, n30, true, true)); }, kBothSides, false, true, false);
   }
+  if (bsdf_available(diffuse(vec3(0.5f))) && bsdf_type_available(BSDF_BUMPMAP)) {
+    const Material rough_gold =
+        roughconductor(Distribution::ggx, 0.3f, 0.3f, true, gold_eta, gold_k, vec3(1.0f));
+    const Material blue = diffuse(vec3(0.2f, 0.5f, 0.9f));
+    // Height slopes tilting the normal by atan(scale |slope|): 30 deg (scale 0.5), 60 deg
+    // (scale 2.5) and 84 deg (scale 10, the flip then acts from wi = 6 deg off the horizon).
+    const vec2 slope30(0.9f, -0.7f);   // |slope| = 1.14, tilt atan(0.57) = 29.7 deg
+    const vec2 slope60(0.4f, 0.55f);   // |slope| = 0.68, tilt atan(1.70) = 59.6 deg
+    const vec2 slope84(-0.8f, 0.45f);  // |slope| = 0.92, tilt atan(9.18) = 83.8 deg
+    const std::vector<glm::vec3> kFrontBelow85 = angles({0.0, 30.0, 60.0, 85.0, 120.0});
+    list.bsdf(
+        "bumpmap", "bumpmap(diffuse) 30deg scale=0.5",
+        [=] { return bumpmap(blue, slope30, 0.5f, true, true); }, kOneSided, false, true, false);
+    list.bsdf(
+        "bumpmap", "bumpmap(diffuse) 84deg scale=10 flip",
+        [=] { return bumpmap(blue, slope84, 10.0f, true, true); }, kOneSided, false, true, false);
+    list.bsdf(
+        "bumpmap", "bumpmap(diffuse) 84deg scale=10 no flip no shadowing",
+        [=] { return bumpmap(blue, slope84, 10.0f, false, false); }, kOneSided, false, true, false);
+    list.bsdf(
+        "bumpmap", "bumpmap(roughconductor ggx a=0.3) 60deg scale=-2.5",
+        [=] { return bumpmap(rough_gold, slope60, -2.5f, true, true); }, kFrontBelow85, false, true,
+        false);
+    list.bsdf(
+        "bumpmap", "bumpmap(roughdielectric beckmann a=0.3 eta=1.5) 30deg scale=0.5",
+        [=] {
+          return bumpmap(roughdielectric(Distribution::beckmann, 0.3f, 0.3f, true, 1.5f, vec3(1.0f),
+                                         vec3(1.0f)),
+                         slope30, 0.5f, true, true);
+        },
+        kBothSides, true, false, false);
+    list.bsdf(
+        "bumpmap", "bumpmap(blendbsdf(diffuse, roughconductor) w=0.5) 60deg scale=2.5",
+        [=] { return bumpmap(blend(blue, rough_gold, 0.5f), slope60, 2.5f, true, true); },
+        kOneSided, false, true, false);
+    list.bsdf(
+        "bumpmap", "twosided(bumpmap(diffuse)) 30deg scale=0.5",
+        [=] { return twosided(bumpmap(blue, slope30, 0.5f, true, true)); }, kBothSides, false, true,
+        false);
+  }
   if (bsdf_available(principled(PrincipledParameters{}))) {
     // A grid over the weights: each lobe alone, pairs, and everything at once.
     struct Setting {
@@ -590,6 +630,26 @@ std::vector<ExtremesCase> build_extremes() {
     }
     add("normalmap", "normalmap(diffuse) n=0",
         normalmap(diffuse(vec3(1.0f)), vec3(0.0f), true, true));
+  }
+  if (bsdf_type_available(BSDF_BUMPMAP)) {
+    // Scale 0 (no perturbation), moderate, huge (the normal within 1e-6 rad of the tangent
+    // plane) and infinite-like (the cross product overflows), negative, with flipping on and off.
+    for (float scale : {0.0f, 1.0f, -3.0f, 1e6f, -1e6f, 1e30f}) {
+      for (vec2 slope : {vec2(1.0f, 0.0f), vec2(0.3f, -0.8f)}) {
+        for (bool flip : {true, false}) {
+          std::string p = " scale=" + fmt(scale) + " slope=(" + fmt(slope.x) + "," + fmt(slope.y) +
+                          ")" + (flip ? " flip" : " noflip");
+          add("bumpmap", "bumpmap(diffuse r=1)" + p,
+              bumpmap(diffuse(vec3(1.0f)), slope, scale, flip, true));
+          add("bumpmap", "bumpmap(dielectric)" + p,
+              bumpmap(dielectric(1.5f, vec3(1.0f), vec3(1.0f)), slope, scale, flip, true));
+          add("bumpmap", "bumpmap(roughconductor a=1e-3)" + p,
+              bumpmap(roughconductor(Distribution::ggx, 1e-3f, 1e-3f, true, vec3(0.2f), vec3(3.9f),
+                                     vec3(1.0f)),
+                      slope, scale, flip, false));
+        }
+      }
+    }
   }
   // principled: every weight at 0, 0.5 and 1 (one at a time from the all-0.5 setting), all at
   // 0 and all at 1, over the roughness and eta grids and black/white base colour.

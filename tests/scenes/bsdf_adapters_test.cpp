@@ -1,5 +1,5 @@
-// Loading of Mitsuba 3.8's BSDF adapters (src/bsdfs/blendbsdf.cpp, normalmap.cpp): the records
-// they build and the scenes Mitsuba refuses.
+// Loading of Mitsuba 3.8's BSDF adapters (src/bsdfs/blendbsdf.cpp, normalmap.cpp, bumpmap.cpp): the
+// records they build and the scenes Mitsuba refuses.
 #include <gtest/gtest.h>
 
 #include "core/material_slots.h"
@@ -145,7 +145,7 @@ TEST(NormalMap, RefusalsAndLimits) {
             std::string::npos);
   const std::string normalmap = "<bsdf type=\"normalmap\">" + kNormal + kDiffuse + "</bsdf>";
   EXPECT_NE(error_of("<bsdf type=\"normalmap\">" + kNormal + normalmap + "</bsdf>")
-                .find("nested normalmaps are not supported"),
+                .find("a normalmap or bumpmap inside a normalmap is not supported"),
             std::string::npos);
   EXPECT_NE(error_of("<bsdf type=\"blendbsdf\"><float name=\"weight\" value=\"0.5\"/>" + normalmap +
                      kDiffuse + "</bsdf>")
@@ -154,6 +154,63 @@ TEST(NormalMap, RefusalsAndLimits) {
   EXPECT_NE(error_of("<bsdf type=\"mask\">" + normalmap + "</bsdf>")
                 .find("around a normalmap is not supported"),
             std::string::npos);
+}
+
+const std::string kHeight =
+    "<texture name=\"any_name\" type=\"bitmap\"><string name=\"filename\" "
+    "value=\"" TWINRAY_SOURCE_DIR
+    "/validation/mitsuba/plugins/bumpmap_height.png\"/>"
+    "<boolean name=\"raw\" value=\"true\"/></texture>";
+
+TEST(BumpMap, DefaultsAndOptions) {
+  Scene d = load_bsdf("<bsdf type=\"bumpmap\">" + kHeight + kDiffuse + "</bsdf>");
+  const Material& m = shape_material(d);
+  ASSERT_EQ(m.type, BSDF_BUMPMAP);
+  EXPECT_EQ(child(d, m, BUMPMAP_BSDF).type, BSDF_DIFFUSE);
+  ASSERT_NE(m.param[BUMPMAP_HEIGHT].texture, NO_INDEX);
+  EXPECT_EQ(d.buffers.textures[m.param[BUMPMAP_HEIGHT].texture].width, 16u);
+  // flip_invalid_normals, use_shadowing_function true and scale 1 (Mitsuba 3.8).
+  EXPECT_EQ(m.param[BUMPMAP_OPTIONS].value, vec3(1.0f, 1.0f, 1.0f));
+  Scene o = load_bsdf(
+      "<bsdf type=\"twosided\"><bsdf type=\"bumpmap\"><float name=\"scale\" value=\"-0.25\"/>"
+      "<boolean name=\"flip_invalid_normals\" value=\"false\"/>"
+      "<boolean name=\"use_shadowing_function\" value=\"false\"/>" +
+      kHeight + kConductor + "</bsdf></bsdf>");
+  EXPECT_EQ(shape_material(o).param[BUMPMAP_OPTIONS].value, vec3(0.0f, 0.0f, -0.25f));
+  EXPECT_NE(shape_material(o).flags & MATERIAL_TWOSIDED, 0u);
+}
+
+TEST(BumpMap, RefusalsAndLimits) {
+  auto refused = [](const std::string& bsdf, const std::string& words) {
+    std::string e = error_of(bsdf);
+    EXPECT_NE(e.find(words), std::string::npos) << e;
+  };
+  refused("<bsdf type=\"bumpmap\">" + kDiffuse + "</bsdf>",
+          "takes exactly one nested texture (it has 0)");
+  const std::string second = "<texture name=\"second\" type=\"checkerboard\"/>";
+  refused("<bsdf type=\"bumpmap\">" + kHeight + second + kDiffuse + "</bsdf>",
+          "takes exactly one nested texture (it has 2)");
+  refused("<bsdf type=\"bumpmap\">" + kHeight + "</bsdf>",
+          "takes exactly one nested BSDF (it has 0)");
+  refused("<bsdf type=\"bumpmap\">" + kHeight + kDiffuse + kConductor + "</bsdf>",
+          "takes exactly one nested BSDF (it has 2)");
+  // Mitsuba 3.8 implements eval_1_grad for bitmap only (checkerboard: NotImplementedError).
+  refused("<bsdf type=\"bumpmap\"><texture type=\"checkerboard\"/>" + kDiffuse + "</bsdf>",
+          "has no uv gradient");
+  refused("<bsdf type=\"bumpmap\"><float name=\"height\" value=\"1\"/>" + kDiffuse + "</bsdf>",
+          "takes exactly one nested texture (it has 0)");
+  const std::string bumpmap = "<bsdf type=\"bumpmap\">" + kHeight + kDiffuse + "</bsdf>";
+  refused("<bsdf type=\"bumpmap\">" + kHeight + bumpmap + "</bsdf>",
+          "a normalmap or bumpmap inside a bumpmap is not supported");
+  refused("<bsdf type=\"normalmap\">" + kNormal + bumpmap + "</bsdf>",
+          "a normalmap or bumpmap inside a normalmap is not supported");
+  refused("<bsdf type=\"blendbsdf\"><float name=\"weight\" value=\"0.5\"/>" + bumpmap + kDiffuse +
+              "</bsdf>",
+          "a bumpmap inside a blendbsdf is not supported");
+  refused("<bsdf type=\"mask\">" + bumpmap + "</bsdf>", "around a bumpmap is not supported");
+  refused(
+      "<bsdf type=\"bumpmap\"><float name=\"scael\" value=\"2\"/>" + kHeight + kDiffuse + "</bsdf>",
+      "unused parameter 'scael'");
 }
 
 }  // namespace

@@ -55,8 +55,8 @@ TEST(SceneErrors, UnknownPlugins) {
                "plugin)");
   expect_error("\n<shape type=\"sphere\">\n<bsdf type=\"velvet\"/></shape>", "velvet",
                "not supported by twinray: velvet (Mitsuba 3 has no such plugin)");
-  expect_error("\n\n<shape type=\"sphere\"><bsdf type=\"bumpmap\"/></shape>", "bumpmap",
-               "not supported by twinray: bumpmap (planned: the Mitsuba plugins issue)");
+  expect_error("\n\n<sensor type=\"perspective\"><sampler type=\"stratified\"/></sensor>",
+               "stratified", "not supported by twinray: stratified (planned: the samplers issue)");
   expect_error("<integrator type=\"volpath\"/>", "volpath",
                "not supported by twinray: volpath (out of scope: participating media");
   expect_error(

@@ -70,6 +70,37 @@ TEST(Texture, WrapModes) {
   expect_vec(eval_texture(0, vec2(-0.49f, 0.51f)), vec3(1, 1, 1));
 }
 
+// Mitsuba's eval_1_grad (bitmap.cpp): the uv derivative of the bilinear interpolation of the
+// first channel, checked against central differences of eval_texture inside the four-texel
+// cells (where the interpolant is smooth), through a diagonal to_uv, and zero when nearest.
+TEST(Texture, BilinearGradient) {
+  SceneBuffers b = two_by_two(FILTER_BILINEAR, WRAP_REPEAT);
+  b.textures[0].to_uv[0] = vec4(3, 0, 0.1f, 0);
+  b.textures[0].to_uv[1] = vec4(0, -2, 0.2f, 0);
+  g_buffers = &b;
+  const float h = 1e-3f;
+  for (vec2 uv : {vec2(0.07f, 0.03f), vec2(0.3f, 0.41f), vec2(0.62f, 0.17f), vec2(0.9f, 0.8f)}) {
+    vec2 g = eval_texture_1_grad(0, uv);
+    float du = (eval_texture(0, uv + vec2(h, 0)).x - eval_texture(0, uv - vec2(h, 0)).x) / (2 * h);
+    float dv = (eval_texture(0, uv + vec2(0, h)).x - eval_texture(0, uv - vec2(0, h)).x) / (2 * h);
+    EXPECT_NEAR(g.x, du, 2e-2f) << uv.x << "," << uv.y;
+    EXPECT_NEAR(g.y, dv, 2e-2f) << uv.x << "," << uv.y;
+    EXPECT_GT(std::abs(g.x) + std::abs(g.y), 1.0f);
+  }
+  // Between the four texel centres (weights 1/2) with top row (1, 0.5), bottom row (0, 1):
+  // dh/dx = ((0.5 - 1) + (1 - 0)) / 2 texels, times the resolution 2 and the to_uv scale 3;
+  // dh/dy = ((0 - 1) + (1 - 0.5)) / 2 times the resolution 2.
+  b.texels[1] = vec4(0.5f, 0, 0, 1);
+  b.textures[0].to_uv[0] = vec4(3, 0, 0, 0);
+  b.textures[0].to_uv[1] = vec4(0, 1, 0, 0);
+  vec2 g = eval_texture_1_grad(0, vec2(0.5f / 3.0f, 0.5f));
+  EXPECT_NEAR(g.x, 1.5f, 1e-5f);
+  EXPECT_NEAR(g.y, -0.5f, 1e-5f);
+  b.textures[0].filter_mode = FILTER_NEAREST;
+  g = eval_texture_1_grad(0, vec2(0.3f, 0.41f));
+  EXPECT_EQ(g, vec2(0.0f));
+}
+
 TEST(Texture, CheckerboardAndTexturedValues) {
   SceneBuffers b;
   Texture t{};

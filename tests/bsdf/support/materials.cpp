@@ -206,6 +206,27 @@ Material normalmap(const Material& bsdf, vec3 normal, bool flip_invalid_normals,
   return m;
 }
 
+Material bumpmap(const Material& bsdf, vec2 slope, float scale, bool flip_invalid_normals,
+                 bool use_shadowing_function) {
+  Texture t{};
+  t.type = TEXTURE_BITMAP;
+  t.filter_mode = FILTER_BILINEAR;
+  t.wrap_mode = WRAP_CLAMP;
+  t.width = t.height = 2u;
+  t.to_uv[0] = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+  t.to_uv[1] = vec4(0.0f, 1.0f, 0.0f, 0.0f);
+  // Texel steps of slope / 2 over a texel of 1/2 in uv.
+  vec2 step = 0.5f * slope;
+  std::vector<vec4> texels = {vec4(0.0f), vec4(step.x), vec4(step.y), vec4(step.x + step.y)};
+  Material m = blank(BSDF_BUMPMAP);
+  m.param[BUMPMAP_HEIGHT].value = vec3(0.0f);
+  m.param[BUMPMAP_HEIGHT].texture = add_texture(t, texels);
+  m.param[BUMPMAP_BSDF] = constant(vec3(float(add_material(bsdf))));
+  m.param[BUMPMAP_OPTIONS] = constant(
+      vec3(flip_invalid_normals ? 1.0f : 0.0f, use_shadowing_function ? 1.0f : 0.0f, scale));
+  return m;
+}
+
 bool bsdf_available(const Material& m) { return (bsdf_flags(m, kUv) & ~BSDF_NULL) != 0u; }
 
 bool bsdf_type_available(uint type) {

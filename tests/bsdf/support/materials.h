@@ -54,6 +54,11 @@ Material blend(const Material& bsdf_0, const Material& bsdf_1, float weight);
 // normalmap around bsdf with a constant normal (stored as Mitsuba's texture value (n + 1) / 2).
 Material normalmap(const Material& bsdf, vec3 normal, bool flip_invalid_normals,
                    bool use_shadowing_function);
+// bumpmap around bsdf with a planar height h = slope . (u, v) (a 2x2 bilinear bitmap, clamped),
+// so that at uv = (0.5, 0.5) the height gradient is scale * slope; on bsdf_surface_flat() the
+// perturbed normal is normalize(-scale slope.x, -scale slope.y, 1).
+Material bumpmap(const Material& bsdf, vec2 slope, float scale, bool flip_invalid_normals,
+                 bool use_shadowing_function);
 
 // Whether core/bsdf.h dispatches this material's type (its flags are non-zero).
 bool bsdf_available(const Material& m);
