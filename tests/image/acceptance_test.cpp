@@ -168,6 +168,36 @@ TEST_F(Acceptance, MisalignedPatchFailsLockstep) {
   EXPECT_GE(l.clustered_windows, 1u);  // the windows over the patch
 }
 
+// A 4x4 patch of pixels 1e-3 off in alternating directions (no systematic shift) is a cluster;
+// a rounding control that moves the same pixels by 5e-5 (half their tolerance) marks them
+// rounding-sensitive and takes them out of the cluster check, a control equal to the reference
+// does not.
+TEST_F(Acceptance, RoundingControlExcusesOnlyTheSensitivePixels) {
+  int bx = 0, by = 0;
+  best_determined_block(&bx, &by);
+  RgbImage render = testing::noisy_render(ref(), var(), kSpp, 1);
+  RgbImage patched = render, control = render;
+  for (int y = by; y < by + 4; ++y)
+    for (int x = bx; x < bx + 4; ++x)
+      for (int c = 0; c < 3; ++c) {
+        patched.at(x, y, c) *= (x + y) % 2 ? 1.001 : 0.999;
+        control.at(x, y, c) *= 1.00005;
+      }
+  LockstepResult plain = lockstep_compare(patched, render);
+  EXPECT_EQ(plain.systematic_cells, 0u);
+  EXPECT_GE(plain.clustered_windows, 1u);
+  EXPECT_FALSE(plain.passed);
+
+  LockstepResult excused = lockstep_compare(patched, render, {}, &control);
+  EXPECT_EQ(excused.rounding_sensitive, 16u);
+  EXPECT_EQ(excused.clustered_windows, 0u);
+  EXPECT_TRUE(excused.passed);
+
+  LockstepResult insensitive = lockstep_compare(patched, render, {}, &render);
+  EXPECT_EQ(insensitive.rounding_sensitive, 0u);
+  EXPECT_FALSE(insensitive.passed);
+}
+
 TEST_F(Acceptance, LockstepToleratesRoundingButNotSmallBias) {
   RgbImage render = testing::noisy_render(ref(), var(), kSpp, 1);
   testing::Gaussian normal(99);

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "cpu_backend/render_cpu.h"
 #include "gpu_backend/render_gpu.h"
@@ -11,16 +13,31 @@
 
 namespace tr {
 
+namespace {
+
+// The rounding control's scene: the camera's origin moved up by one float ulp on each axis.
+Scene camera_moved_one_ulp(const Scene& scene) {
+  Scene moved = scene;
+  for (vec4& row : moved.buffers.globals.camera.to_world)
+    row.w = std::nextafter(row.w, std::numeric_limits<float>::infinity());
+  return moved;
+}
+
+}  // namespace
+
 void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed) {
   RenderOptions options;
   options.spp = spp;
   options.seed = seed;
   RenderResult cpu = render_cpu(scene, options);
   RenderResult gpu = render_gpu(scene, options);
-  LockstepResult r = lockstep_compare(mean_image(gpu), mean_image(cpu));
+  RgbImage control = mean_image(render_cpu(camera_moved_one_ulp(scene), options));
+  LockstepResult r = lockstep_compare(mean_image(gpu), mean_image(cpu), {}, &control);
   std::printf(
-      "%s, %u spp: %.6f of pixels within tolerance, %zu systematic, %zu clustered windows\n",
-      label.c_str(), spp, r.fraction_within, r.systematic_cells, r.clustered_windows);
+      "%s, %u spp: %.6f of pixels within tolerance, %zu systematic, %zu clustered windows "
+      "(%zu rounding-sensitive pixels)\n",
+      label.c_str(), spp, r.fraction_within, r.systematic_cells, r.clustered_windows,
+      r.rounding_sensitive);
   for (const LockstepPixel& p : r.worst)
     if (p.excess > 1.0)
       std::printf("  (%d, %d) gpu %.7g %.7g %.7g cpu %.7g %.7g %.7g excess %.3g\n", p.x, p.y,

@@ -24,12 +24,14 @@ double binomial_upper_tail(int n, int k, double f) {
 }  // namespace
 
 LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
-                                const LockstepOptions& options) {
+                                const LockstepOptions& options, const RgbImage* rounding_control) {
   check_same_size(a, "first image", b, "second image");
+  if (rounding_control) check_same_size(*rounding_control, "rounding control", b, "second image");
   if (options.block < 2) throw std::invalid_argument("lockstep block size must be at least 2");
   LockstepResult r;
   r.pixels = a.pixel_count();
   r.excess_map.resize(r.pixels);
+  std::vector<char> sensitive(r.pixels, 0);
   std::vector<LockstepPixel> all(r.pixels);
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
@@ -44,7 +46,15 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
             options.rel * std::max(std::fabs(p.a[c]), std::fabs(p.b[c])) + options.abs;
         p.excess = std::max(p.excess, d / tolerance);
         r.max_abs_difference = std::max(r.max_abs_difference, d);
+        if (rounding_control) {
+          double vc = rounding_control->at(x, y, c);
+          double control_tolerance =
+              options.rel * std::max(std::fabs(vc), std::fabs(p.b[c])) + options.abs;
+          if (std::fabs(vc - p.b[c]) > options.rounding_share * control_tolerance)
+            sensitive[size_t(y) * a.width + x] = 1;
+        }
       }
+      r.rounding_sensitive += sensitive[size_t(y) * a.width + x];
       r.excess_map[size_t(y) * a.width + x] = float(p.excess);
       if (p.excess > 1.0) ++r.pixels_outside;
     }
@@ -94,12 +104,15 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
       }
       if (cell_flagged) ++r.systematic_cells;
     }
-  const double f = double(r.pixels_outside) / double(r.pixels);
+  auto outside_and_insensitive = [&](size_t i) { return r.excess_map[i] > 1.0f && !sensitive[i]; };
+  size_t cluster_candidates = 0;
+  for (size_t i = 0; i < r.pixels; ++i) cluster_candidates += outside_and_insensitive(i);
+  const double f = double(cluster_candidates) / double(r.pixels);
   for (int wy = 0; wy < windows_y; ++wy)
     for (int wx = 0; wx < windows_x; ++wx) {
       int k = 0;
       for (int i = 0; i < n; ++i)
-        if (r.excess_map[size_t(wy + i / B) * a.width + wx + i % B] > 1.0f) ++k;
+        if (outside_and_insensitive(size_t(wy + i / B) * a.width + wx + i % B)) ++k;
       if (k > r.most_outside) {
         r.most_outside = k;
         r.most_outside_x = wx;
