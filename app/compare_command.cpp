@@ -37,6 +37,9 @@ Lockstep agreement (two renders with the same sampler seed; always reported):
   --tolerance REL       relative tolerance per channel (default 1e-4)
   --abs-tolerance ABS   absolute tolerance per channel (default 1e-6)
   --lockstep-fraction F required fraction of pixels within tolerance (default 0.99)
+  --rounding-control C  B's renderer on the same scene with its camera moved by one float
+                        ulp: pixels of C off B by a quarter of their tolerance are rounding-
+                        sensitive and left out of the cluster test
   --worst N             worst pixels / blocks listed (default 10)
 
 Other criteria and outputs:
@@ -94,7 +97,7 @@ double parse_probability(const std::string& flag, const std::string& text) {
 
 struct Arguments {
   std::vector<std::string> images;
-  std::string var_a, var_b, heatmap, json;
+  std::string var_a, var_b, rounding_control, heatmap, json;
   double spp_a = 0.0, spp_b = 0.0, heatmap_range = 0.1;
   HeatmapMetric heatmap_metric = HeatmapMetric::flip;
   bool quiet = false, help = false;
@@ -113,6 +116,8 @@ Arguments parse(int argc, char** argv) {
       a.help = true;
     else if (flag == "--var-a")
       a.var_a = next();
+    else if (flag == "--rounding-control")
+      a.rounding_control = next();
     else if (flag == "--var-b")
       a.var_b = next();
     else if (flag == "--spp-a")
@@ -230,6 +235,9 @@ void print_report(const CompareReport& r, const CompareOptions& o) {
                           : "FAIL",
       l.fraction_within, o.lockstep_options.rel, o.lockstep_options.abs, l.systematic_cells,
       l.clustered_windows, r.lockstep_decides ? "" : " (not a criterion without --lockstep)");
+  if (l.rounding_controlled)
+    std::printf("               %zu rounding-sensitive pixels (left out of the cluster test)\n",
+                l.rounding_sensitive);
   if (r.lockstep_decides)
     for (const LockstepPixel& p : l.worst)
       if (p.excess > 1.0)
@@ -261,6 +269,7 @@ int compare_command(int argc, char** argv) {
     in.reference = to_rgb(b, args.images[1]);
     if (!args.var_a.empty()) in.test_variance = read_rgb(args.var_a);
     if (!args.var_b.empty()) in.reference_variance = read_rgb(args.var_b);
+    if (!args.rounding_control.empty()) in.rounding_control = read_rgb(args.rounding_control);
     in.test_spp = args.spp_a > 0.0 ? args.spp_a : spp_from_metadata(a, "A", "--spp-a", args.quiet);
     in.reference_spp =
         args.spp_b > 0.0 ? args.spp_b : spp_from_metadata(b, "B", "--spp-b", args.quiet);

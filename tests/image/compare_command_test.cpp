@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -93,6 +95,45 @@ TEST_F(CompareCommand, ScaledFails) {
 TEST_F(CompareCommand, LockstepOfIdenticalImagesPasses) {
   EXPECT_EQ(run({path("good.exr"), path("good.exr"), "--lockstep"}), 0);
   EXPECT_EQ(run({path("scaled.exr"), path("good.exr"), "--lockstep"}), 1);
+}
+
+// A 4x4 patch off by 1% in alternating directions is a cluster; a rounding control that moves
+// the patch marks it rounding-sensitive; a control of another size is bad input.
+TEST_F(CompareCommand, RoundingControlExcusesSensitivePixels) {
+  RgbImage good = read_rgb(path("good.exr"));
+  int bx = 0, by = 0;  // the 4x4 block whose darkest value is the brightest
+  double best = -1.0;
+  for (int y0 = 0; y0 + 4 <= good.height; ++y0)
+    for (int x0 = 0; x0 + 4 <= good.width; ++x0) {
+      double darkest = INFINITY;
+      for (int i = 0; i < 16; ++i)
+        for (int c = 0; c < 3; ++c) darkest = std::min(darkest, good.at(x0 + i % 4, y0 + i / 4, c));
+      if (darkest > best) best = darkest, bx = x0, by = y0;
+    }
+  RgbImage patched = good, control = good;
+  for (int y = by; y < by + 4; ++y)
+    for (int x = bx; x < bx + 4; ++x)
+      for (int c = 0; c < 3; ++c) {
+        patched.at(x, y, c) *= (x + y) % 2 ? 1.01 : 0.99;
+        control.at(x, y, c) *= 1.005;
+      }
+  write(path("patched.exr"), patched);
+  write(path("control.exr"), control);
+  EXPECT_EQ(run({path("patched.exr"), path("good.exr"), "--lockstep"}), 1);
+  EXPECT_EQ(run({path("patched.exr"), path("good.exr"), "--lockstep", "--rounding-control",
+                 path("control.exr")}),
+            0);
+  EXPECT_EQ(run({path("patched.exr"), path("good.exr"), "--lockstep", "--rounding-control",
+                 path("good.exr")}),
+            1);
+  Image small;
+  small.width = small.height = 8;
+  small.channels = 3;
+  small.pixels.assign(8 * 8 * 3, 0.5f);
+  write_exr(path("small_control.exr"), small);
+  EXPECT_EQ(run({path("patched.exr"), path("good.exr"), "--lockstep", "--rounding-control",
+                 path("small_control.exr")}),
+            2);
 }
 
 TEST_F(CompareCommand, SampleCountComesFromTwinrayMetadata) {

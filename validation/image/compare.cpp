@@ -54,7 +54,8 @@ CompareReport compare_images(const CompareInputs& in, const CompareOptions& opti
     r.notes.push_back("ssim: not computed, the image is smaller than the 11x11 window");
   r.pixels_per_degree = options.pixels_per_degree;
   r.flip = ldr_flip(in.test, in.reference, options.pixels_per_degree);
-  r.lockstep = lockstep_compare(in.test, in.reference, options.lockstep_options);
+  r.lockstep = lockstep_compare(in.test, in.reference, options.lockstep_options,
+                                in.rounding_control ? &*in.rounding_control : nullptr);
   r.lockstep_decides = options.lockstep;
 
   const VarianceTestOptions& vo = options.variance;
@@ -217,6 +218,7 @@ std::string compare_report_json(const CompareReport& r, const CompareOptions& op
       .field("block_alpha", l.block_alpha)
       .field("systematic_cells", std::uint64_t(l.systematic_cells))
       .field("clustered_windows", std::uint64_t(l.clustered_windows))
+      .field("rounding_sensitive_pixels", std::uint64_t(l.rounding_sensitive))
       .field("most_outside_in_window", l.most_outside);
   j.key("worst_pixels").begin_array();
   for (const LockstepPixel& p : l.worst) {

@@ -32,6 +32,9 @@ struct CompareInputs {
   // Per-sample variance images (Mitsuba `moment` semantics) and samples per pixel; 0 = unknown.
   std::optional<RgbImage> test_variance, reference_variance;
   double test_spp = 0.0, reference_spp = 0.0;
+  // The lockstep check's rounding control: B's renderer on the same scene with its camera moved
+  // by one float ulp (validation/image/lockstep.h).
+  std::optional<RgbImage> rounding_control;
 };
 
 struct CompareOptions {

@@ -30,6 +30,7 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
   if (options.block < 2) throw std::invalid_argument("lockstep block size must be at least 2");
   LockstepResult r;
   r.pixels = a.pixel_count();
+  r.rounding_controlled = rounding_control != nullptr;
   r.excess_map.resize(r.pixels);
   std::vector<char> sensitive(r.pixels, 0);
   std::vector<LockstepPixel> all(r.pixels);

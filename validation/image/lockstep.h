@@ -79,9 +79,10 @@ struct LockstepResult {
   std::vector<float> excess_map;     // per pixel
   size_t windows = 0;
   double block_alpha = 0.0;
-  size_t systematic_cells = 0;    // windows with a flagged channel
-  size_t clustered_windows = 0;   // windows flagged by the cluster check
-  size_t rounding_sensitive = 0;  // pixels left out of the cluster check (rounding control)
+  size_t systematic_cells = 0;       // windows with a flagged channel
+  size_t clustered_windows = 0;      // windows flagged by the cluster check
+  bool rounding_controlled = false;  // a rounding control was given
+  size_t rounding_sensitive = 0;     // pixels left out of the cluster check by it
   int most_outside = 0, most_outside_x = 0, most_outside_y = 0;  // the fullest window
   std::vector<LockstepBlock> worst_blocks;  // smallest p first, at most worst_count
   bool passed = false;
