@@ -169,19 +169,15 @@ TEST_F(Acceptance, MisalignedPatchFailsLockstep) {
 }
 
 // A 4x4 patch of pixels 1e-3 off in alternating directions (no systematic shift) is a cluster;
-// a rounding control that moves the same pixels by 5e-4 marks them rounding-sensitive and takes them out of the cluster check, a control equal to the reference
-// does not.
+// a rounding control that moves the same pixels by 5e-4 marks them rounding-sensitive and
+// takes them out of the cluster check, a control equal to the reference does not.
 TEST_F(Acceptance, RoundingControlExcusesOnlyTheSensitivePixels) {
   int bx = 0, by = 0;
   best_determined_block(&bx, &by);
   RgbImage render = testing::noisy_render(ref(), var(), kSpp, 1);
   RgbImage patched = render, control = render;
-  for (int y = by; y < by + 4; ++y)
-    for (int x = bx; x < bx + 4; ++x)
-      for (int c = 0; c < 3; ++c) {
-        patched.at(x, y, c) *= (x + y) % 2 ? 1.001 : 0.999;
-        control.at(x, y, c) *= 1.0005;
-      }
+  testing::scale_block(patched, bx, by, 0.999, 1.001);
+  testing::scale_block(control, bx, by, 1.0005, 1.0005);
   LockstepResult plain = lockstep_compare(patched, render);
   EXPECT_EQ(plain.systematic_cells, 0u);
   EXPECT_GE(plain.clustered_windows, 1u);

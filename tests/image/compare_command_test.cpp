@@ -111,12 +111,8 @@ TEST_F(CompareCommand, RoundingControlExcusesSensitivePixels) {
       if (darkest > best) best = darkest, bx = x0, by = y0;
     }
   RgbImage patched = good, control = good;
-  for (int y = by; y < by + 4; ++y)
-    for (int x = bx; x < bx + 4; ++x)
-      for (int c = 0; c < 3; ++c) {
-        patched.at(x, y, c) *= (x + y) % 2 ? 1.01 : 0.99;
-        control.at(x, y, c) *= 1.005;
-      }
+  testing::scale_block(patched, bx, by, 0.99, 1.01);
+  testing::scale_block(control, bx, by, 1.005, 1.005);
   write(path("patched.exr"), patched);
   write(path("control.exr"), control);
   EXPECT_EQ(run({path("patched.exr"), path("good.exr"), "--lockstep"}), 1);

@@ -46,6 +46,13 @@ inline RgbImage noisy_render(const RgbImage& reference, const RgbImage& variance
   return out;
 }
 
+// Scales the 4x4 block at (x0, y0): pixels with x + y even by `even`, the others by `odd`.
+inline void scale_block(RgbImage& img, int x0, int y0, double even, double odd) {
+  for (int y = y0; y < y0 + 4; ++y)
+    for (int x = x0; x < x0 + 4; ++x)
+      for (int c = 0; c < 3; ++c) img.at(x, y, c) *= (x + y) % 2 ? odd : even;
+}
+
 inline RgbImage constant_image(int width, int height, double r, double g, double b) {
   RgbImage img;
   img.width = width;
