@@ -55,11 +55,13 @@ void join_identical_vertices(TriangleMesh& mesh) {
   mesh = std::move(out);
 }
 
-// A PLY property as Mitsuba's StructConverter turns it into a float: integer properties are
-// normalized to [0, 1] by their type's largest value and sRGB-decoded (src/shapes/ply.h flags
-// them Normalized | Gamma), floating-point ones are rounded to float.
+// A PLY property as Mitsuba's StructConverter turns it into a float. src/shapes/ply.h flags
+// the integer types from Int8 to UInt64 of its Struct::Type enum Normalized | Gamma: they are
+// divided by their type's largest value and sRGB-decoded. That range of the enum
+// (UInt8, Int8, UInt16, ..., UInt64, Int64) leaves out UInt8: uchar values are taken as they
+// are (255 stays 255), as are floating-point ones (rounded to float).
 float ply_float(const PlyProperty& p, double value) {
-  if (!ply_is_integer(p.type)) return float(value);
+  if (!ply_is_integer(p.type) || p.type == "uchar" || p.type == "uint8") return float(value);
   return srgb_decode(float(value / ply_integer_max(p.type)));
 }
 

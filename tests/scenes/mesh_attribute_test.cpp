@@ -14,21 +14,22 @@ namespace {
 
 using namespace testing_files;
 
-// A quad of two triangles with 8-bit colors and a 1-channel property per vertex, and a
-// 3-channel and a 1-channel property per face.
+// A quad of two triangles with 16-bit colors and a 1-channel property per vertex, and a
+// 3-channel and a 1-channel (8-bit) property per face.
 const std::string kQuadPly =
     "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-    "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "property float z\nproperty ushort red\nproperty ushort green\nproperty ushort blue\n"
     "property float weight_x\nelement face 2\nproperty list uchar int vertex_indices\n"
     "property float color_0\nproperty float color_1\nproperty float color_2\n"
-    "property float id_x\nend_header\n"
-    "-1 -1 0 255 0 51 0.25\n1 -1 0 0 255 102 0.5\n1 1 0 0 0 153 0.75\n-1 1 0 255 255 204 1\n"
+    "property uchar id_x\nend_header\n"
+    "-1 -1 0 65535 0 51 0.25\n1 -1 0 0 65535 102 0.5\n1 1 0 0 0 30000 0.75\n"
+    "-1 1 0 65535 65535 60000 1\n"
     "3 0 1 2 0.1 0.2 0.3 7\n3 0 2 3 0.4 0.5 0.6 8\n";
 
-// Mitsuba's StructConverter turns an 8-bit property into float by normalizing and decoding
-// sRGB (IEC 61966-2-1).
-float decoded(int byte) {
-  double c = byte / 255.0;
+// Mitsuba's StructConverter turns a 16-bit property into float by normalizing and decoding
+// sRGB (IEC 61966-2-1); 8-bit ones are taken as they are (scenes/mesh.cpp, ply_float).
+float decoded(int ushort_value) {
+  double c = ushort_value / 65535.0;
   return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
 }
 
@@ -47,16 +48,18 @@ TEST(PlyAttributes, VertexAndFacePropertiesAsMitsubaNamesThem) {
   ASSERT_EQ(m.attributes.size(), 4u);
   const VertexAttribute& color = m.attributes.at("vertex_color");
   EXPECT_EQ(color.dim, 3);
-  const int bytes[4][3] = {{255, 0, 51}, {0, 255, 102}, {0, 0, 153}, {255, 255, 204}};
+  const int stored[4][3] = {{65535, 0, 51}, {0, 65535, 102}, {0, 0, 30000}, {65535, 65535, 60000}};
   ASSERT_EQ(color.values.size(), 12u);
   for (int v = 0; v < 4; ++v)
-    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(color.values[3 * v + c], decoded(bytes[v][c]));
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(color.values[3 * v + c], decoded(stored[v][c]));
   EXPECT_EQ(m.attributes.at("vertex_weight").dim, 1);
   EXPECT_EQ(m.attributes.at("vertex_weight").values,
             (std::vector<float>{0.25f, 0.5f, 0.75f, 1.0f}));
   EXPECT_EQ(m.attributes.at("face_color").dim, 3);
   EXPECT_EQ(m.attributes.at("face_color").values,
             (std::vector<float>{0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f}));
+  // uchar is not normalized: Mitsuba's flag test (Int8 <= type <= UInt64 in its Struct::Type
+  // order UInt8, Int8, ...) leaves UInt8 out.
   EXPECT_EQ(m.attributes.at("face_id").values, (std::vector<float>{7.0f, 8.0f}));
   EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
 }
