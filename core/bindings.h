@@ -20,6 +20,7 @@
 #define BINDING_ACCUMULATION 13
 #define BINDING_GEOMETRY_SHAPES 14  // gpu_backend/scene_accel.h: TLAS geometry -> shape
 #define BINDING_AOVS 15             // Mitsuba `aov`: per pixel and output variable, one PixelBatch
-#define BINDING_COUNT 16
+#define BINDING_ATTRIBUTES 16       // mesh attributes (core/texture.h, eval_mesh_attribute)
+#define BINDING_COUNT 17
 
 #endif

@@ -13,6 +13,7 @@
 // (core/bsdf/blend.h), a mixture of other materials, possibly blends themselves; the public
 // bsdf_* also take a `normalmap` around such a tree.
 //
+// uv is a TexCoord (core/texture.h); the public functions also take a plain vec2 uv.
 //   bsdf_flags(m, uv)           lobes this material can produce (BSDF_* bits)
 //   bsdf_eval(m, uv, wi, wo)    f(wi, wo) |cos theta_o|, zero for delta lobes
 //   bsdf_pdf(m, uv, wi, wo)     solid-angle density of bsdf_sample returning wo (smooth lobes)
@@ -34,7 +35,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint bsdf_base_flags(Material m, vec2 uv) {
+INLINE uint bsdf_base_flags(Material m, TexCoord uv) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_flags(m, uv);
@@ -73,7 +74,7 @@ INLINE uint bsdf_base_flags(Material m, vec2 uv) {
 }
 
 // Delta lobes have neither a density nor a value: only BSDFs with smooth lobes appear here.
-INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_base_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_eval(m, uv, wi, wo);
@@ -102,7 +103,7 @@ INLINE vec3 bsdf_base_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return vec3(0.0f);
 }
 
-INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_base_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_pdf(m, uv, wi, wo);
@@ -131,7 +132,7 @@ INLINE float bsdf_base_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return 0.0f;
 }
 
-INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_sample(m, uv, wi, u1, u2);
@@ -170,20 +171,20 @@ INLINE BsdfSample bsdf_base_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
 }
 
 // Mask opacity, clipped to [0, 1] as Mitsuba's MaskBSDF::eval_opacity.
-INLINE float bsdf_opacity(Material m, vec2 uv) {
+INLINE float bsdf_opacity(Material m, TexCoord uv) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
     return clamp(eval_textured_1(m.opacity, uv), 0.0f, 1.0f);
   return 1.0f;
 }
 
-INLINE uint bsdf_leaf_flags(Material m, vec2 uv) {
+INLINE uint bsdf_leaf_flags(Material m, TexCoord uv) {
   uint flags = bsdf_base_flags(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
     flags |= BSDF_NULL;
   return flags;
 }
 
-INLINE vec3 bsdf_leaf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_leaf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -191,7 +192,7 @@ INLINE vec3 bsdf_leaf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m, uv);
 }
 
-INLINE float bsdf_leaf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_leaf_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -199,7 +200,7 @@ INLINE float bsdf_leaf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m, uv);
 }
 
-INLINE BsdfSample bsdf_leaf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_leaf_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   float opacity = bsdf_opacity(m, uv);
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
@@ -218,7 +219,7 @@ INLINE BsdfSample bsdf_leaf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 
 // principled.cpp: base_color), otherwise pi f(wi, n) cos = pi * eval at wo = the normal
 // (src/render/bsdf.cpp). `twosided` mirrors wi to the front (twosided.cpp); `mask` returns the
 // nested BSDF's (mask.cpp), without its opacity.
-INLINE vec3 bsdf_diffuse_reflectance(Material m, vec2 uv, vec3 wi) {
+INLINE vec3 bsdf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
     wi.z = abs(wi.z);
   switch (m.type) {
@@ -247,22 +248,22 @@ TR_NAMESPACE_END
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint bsdf_tree_flags(Material m, vec2 uv) {
+INLINE uint bsdf_tree_flags(Material m, TexCoord uv) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_flags(m, uv);
   return bsdf_leaf_flags(m, uv);
 }
 
-INLINE vec3 bsdf_tree_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_tree_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_eval(m, uv, wi, wo);
   return bsdf_leaf_eval(m, uv, wi, wo);
 }
 
-INLINE float bsdf_tree_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_tree_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_pdf(m, uv, wi, wo);
   return bsdf_leaf_pdf(m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_tree_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_tree_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_sample(m, uv, wi, u1, u2);
   return bsdf_leaf_sample(m, uv, wi, u1, u2);
 }
@@ -282,17 +283,17 @@ INLINE bool bsdf_is_bumpmap(Material m) {
 
 INLINE bool bsdf_is_perturbed(Material m) { return bsdf_is_normalmap(m) || bsdf_is_bumpmap(m); }
 
-INLINE Frame bsdf_perturbed_frame(Material m, BsdfSurface g, vec2 uv, vec3 wi) {
+INLINE Frame bsdf_perturbed_frame(Material m, BsdfSurface g, TexCoord uv, vec3 wi) {
   if (bsdf_is_bumpmap(m)) return bumpmap_frame(m, g, uv, wi);
   return normalmap_frame(m, uv, wi);
 }
 
-INLINE uint bsdf_flags(Material m, vec2 uv) {
+INLINE uint bsdf_flags(Material m, TexCoord uv) {
   if (bsdf_is_perturbed(m)) m = scene_material(normalmap_child(m));
   return bsdf_tree_flags(m, uv);
 }
 
-INLINE vec3 bsdf_surface_eval(BsdfSurface g, Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_surface_eval(BsdfSurface g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
   float scale = 1.0f;
   if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
@@ -310,7 +311,7 @@ INLINE vec3 bsdf_surface_eval(BsdfSurface g, Material m, vec2 uv, vec3 wi, vec3 
   return bsdf_tree_eval(m, uv, wi, wo) * scale;
 }
 
-INLINE float bsdf_surface_pdf(BsdfSurface g, Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_surface_pdf(BsdfSurface g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
       wo.z = mulsign(wo.z, wi.z);
@@ -326,7 +327,7 @@ INLINE float bsdf_surface_pdf(BsdfSurface g, Material m, vec2 uv, vec3 wi, vec3 
   return bsdf_tree_pdf(m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_surface_sample(BsdfSurface g, Material m, vec2 uv, vec3 wi, float u1,
+INLINE BsdfSample bsdf_surface_sample(BsdfSurface g, Material m, TexCoord uv, vec3 wi, float u1,
                                       vec2 u2) {
   bool perturbed = bsdf_is_perturbed(m);
   float wi_z = wi.z;
@@ -351,16 +352,31 @@ INLINE BsdfSample bsdf_surface_sample(BsdfSurface g, Material m, vec2 uv, vec3 w
   return s;
 }
 
-INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return bsdf_surface_eval(bsdf_surface_flat(), m, uv, wi, wo);
 }
 
-INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return bsdf_surface_pdf(bsdf_surface_flat(), m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   return bsdf_surface_sample(bsdf_surface_flat(), m, uv, wi, u1, u2);
+}
+
+// The same at a point known only by its uv (no mesh attributes).
+INLINE uint bsdf_flags(Material m, vec2 uv) { return bsdf_flags(m, tex_coord(uv)); }
+
+INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  return bsdf_eval(m, tex_coord(uv), wi, wo);
+}
+
+INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+  return bsdf_pdf(m, tex_coord(uv), wi, wo);
+}
+
+INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+  return bsdf_sample(m, tex_coord(uv), wi, u1, u2);
 }
 
 TR_NAMESPACE_END

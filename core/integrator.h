@@ -63,7 +63,7 @@ INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
   s.anchor.pad0 = 0u;
   s.anchor.wi = vec3(0.0f, 0.0f, 1.0f);
   s.anchor.pad1 = 0.0f;
-  s.anchor.uv = vec2(0.0f);
+  s.anchor.tex = tex_coord(vec2(0.0f));
   s.anchor.dp_du = vec3(1.0f, 0.0f, 0.0f);
   s.anchor.dp_dv = vec3(0.0f, 1.0f, 0.0f);
   return s;
@@ -80,7 +80,7 @@ INLINE ShadingPoint shading_point(SurfaceInteraction si) {
   sp.pad0 = 0u;
   sp.wi = si.wi;
   sp.pad1 = 0.0f;
-  sp.uv = si.uv;
+  sp.tex = surface_tex_coord(si);
   sp.dp_du = si.dp_du;
   sp.dp_dv = si.dp_dv;
   return sp;
@@ -171,16 +171,16 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
 
   // ---- Emitter sampling.
   ShadowRay sr = no_shadow_ray();
-  if (round < uint(n_emitter) && (bsdf_flags(m, sp.uv) & BSDF_SMOOTH) != 0u) {
+  if (round < uint(n_emitter) && (bsdf_flags(m, sp.tex) & BSDF_SMOOTH) != 0u) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);
-      vec3 f = bsdf_surface_eval(bsdf_surface(sp), m, sp.uv, sp.wi, wo);
+      vec3 f = bsdf_surface_eval(bsdf_surface(sp), m, sp.tex, sp.wi, wo);
       float mis = es.delta != 0u
                       ? 1.0f
                       : power_heuristic(
                             es.pdf * frac_emitter,
-                            bsdf_surface_pdf(bsdf_surface(sp), m, sp.uv, sp.wi, wo) * frac_bsdf);
+                            bsdf_surface_pdf(bsdf_surface(sp), m, sp.tex, sp.wi, wo) * frac_bsdf);
       sr.contribution = base * f * es.weight * (mis / n_emitter);
       if (any(notEqual(sr.contribution, vec3(0.0f)))) {
         sr.enabled = 1u;
@@ -195,7 +195,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   s.prev_p = sp.p;
   if (round < uint(n_bsdf)) {
     float u1 = rng_next_1d(s.rng);
-    BsdfSample bs = bsdf_surface_sample(bsdf_surface(sp), m, sp.uv, sp.wi, u1, rng_next_2d(s.rng));
+    BsdfSample bs = bsdf_surface_sample(bsdf_surface(sp), m, sp.tex, sp.wi, u1, rng_next_2d(s.rng));
     s.ray = spawn_ray(sp.p, sp.ng, frame_to_world(sp.frame, bs.wo));
     s.throughput = base * bs.weight;
     s.eta *= bs.eta;

@@ -10,6 +10,7 @@
 #include "core/shapes/cylinder.h"
 #include "core/shapes/disk.h"
 #include "core/shapes/sphere.h"
+#include "core/texture.h"
 #include "core/transform.h"
 
 TR_NAMESPACE_BEGIN
@@ -27,7 +28,14 @@ struct SurfaceInteraction {
   uint instance;
   vec3 dp_du;  // Mitsuba's partial derivatives of the position in uv (world space)
   vec3 dp_dv;
+  vec2 barycentrics;  // meshes: (b1, b2) in the triangle hit
+  uint primitive;     // meshes: the triangle hit
 };
+
+// Where the textures of the hit surface are evaluated (mesh attributes need the triangle).
+INLINE TexCoord surface_tex_coord(SurfaceInteraction si) {
+  return tex_coord_mesh(si.uv, si.shape, si.primitive, si.barycentrics);
+}
 
 // Mitsuba's shading frame: s follows dp/du projected onto the tangent plane when the
 // parameterization provides it, otherwise Duff et al.'s basis (Mitsuba coordinate_system).
@@ -51,6 +59,8 @@ INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
   si.instance = hit.instance;
   si.material = shape.material;
   si.emitter = shape.emitter;
+  si.barycentrics = hit.barycentrics;
+  si.primitive = hit.primitive;
   vec3 n_shading;
   vec3 dp_du = vec3(0.0f);
   if (TR_HAS_SHAPE(SHAPE_MESH) && shape.type == SHAPE_MESH) {

@@ -22,6 +22,9 @@ vec3 scene_position(uint vertex);
 vec3 scene_normal(uint vertex);
 vec2 scene_uv(uint vertex);
 uint scene_index(uint index);
+// Word i of the mesh attribute buffer: per-mesh tables and the values as float bits
+// (core/texture.h, eval_mesh_attribute).
+uint scene_attribute(uint i);
 // Entry i of the camera's reconstruction-filter table and k of its cumulative masses
 // (Camera.filter_table, Camera.filter_cdf), read in place: an array copied into a shader's local
 // memory and indexed there cost the GPU backend three quarters of its throughput.

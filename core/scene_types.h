@@ -13,6 +13,7 @@ TR_NAMESPACE_BEGIN
 // ---- Textures --------------------------------------------------------------------------
 const uint TEXTURE_BITMAP = 0u;
 const uint TEXTURE_CHECKERBOARD = 1u;
+const uint TEXTURE_MESH_ATTRIBUTE = 2u;  // Mitsuba `mesh_attribute` (core/texture.h)
 
 const uint FILTER_NEAREST = 0u;
 const uint FILTER_BILINEAR = 1u;
@@ -28,11 +29,11 @@ struct Texture {
   uint texel_offset;  // first texel in the texel buffer (bitmap), row-major, top row first
   uint width;
   uint height;
-  uint pad0;
-  uint pad1;
-  vec4 color0;    // checkerboard color0
-  vec4 color1;    // checkerboard color1
-  vec4 to_uv[2];  // rows of the 2x3 affine uv transform (Mitsuba `to_uv`)
+  uint attribute_slot;      // mesh_attribute: entry of Shape.attribute_table (the name)
+  uint attribute_per_face;  // mesh_attribute: 1 for a face_* attribute, 0 for vertex_*
+  vec4 color0;              // checkerboard color0; mesh_attribute: `scale` in x
+  vec4 color1;              // checkerboard color1
+  vec4 to_uv[2];            // rows of the 2x3 affine uv transform (Mitsuba `to_uv`)
 };
 
 // A BSDF parameter that is either a constant or a texture lookup (texture != NO_INDEX).
@@ -96,14 +97,15 @@ struct Shape {
   uint triangle_count;  // meshes: number of triangles
   uint first_vertex;    // meshes: added to every index
   uint vertex_count;
-  vec4 to_world[3];   // analytic shapes: object->world (mesh vertices are pre-transformed)
-  vec4 to_object[3];  // analytic shapes: world->object
-  float area;         // world-space surface area
-  uint scene_index;   // position in Mitsuba's Scene::shapes() (scenes/build_shapes.cpp,
-                      // number_shapes_as_mitsuba)
-  uint prim_offset;   // Mitsuba's prim_index of triangle 0 (meshes merged into one), or
-                      // NO_INDEX: one primitive (sphere, disk, cylinder)
-  uint pad2;
+  vec4 to_world[3];      // analytic shapes: object->world (mesh vertices are pre-transformed)
+  vec4 to_object[3];     // analytic shapes: world->object
+  float area;            // world-space surface area
+  uint scene_index;      // position in Mitsuba's Scene::shapes() (scenes/build_shapes.cpp,
+                         // number_shapes_as_mitsuba)
+  uint prim_offset;      // Mitsuba's prim_index of triangle 0 (meshes merged into one), or
+                         // NO_INDEX: one primitive (sphere, disk, cylinder)
+  uint attribute_table;  // meshes read by mesh_attribute textures: first word of this mesh's
+                         // table in the attribute buffer (core/texture.h), else NO_INDEX
 };
 
 // An instance places a range of shapes (a top-level set or a Mitsuba `shapegroup`) in the

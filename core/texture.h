@@ -2,7 +2,9 @@
 // and Dr.Jit's Texture lookup): uv passes through `to_uv`; a bitmap texel (i, j) covers
 // [i, i+1) x [j, j+1) in pos = uv * resolution, row j = 0 being the top row of the image;
 // bilinear filtering interpolates the four texels around pos - 0.5, nearest takes
-// floor(pos); out-of-range texel indices are wrapped by `wrap_mode`.
+// floor(pos); out-of-range texel indices are wrapped by `wrap_mode`. A `mesh_attribute`
+// texture reads the hit mesh's vertex or face data instead (Mitsuba's Mesh::eval_attribute),
+// so BSDF parameters are evaluated at a TexCoord: the uv and, on meshes, the triangle hit.
 #ifndef TWINRAY_CORE_TEXTURE_H
 #define TWINRAY_CORE_TEXTURE_H
 
@@ -25,6 +27,27 @@ INLINE int texture_wrap(int i, int n, uint mode) {
   int m = texture_mod(i, 2 * n);
   return m < n ? m : 2 * n - 1 - m;
 }
+
+// Where a texture is evaluated: the surface's uv and, on a mesh, the shape, the triangle and
+// the barycentrics (b1, b2) of the hit, which mesh attributes interpolate.
+struct TexCoord {
+  vec2 uv;
+  vec2 barycentrics;
+  uint shape;  // NO_INDEX where no mesh was hit
+  uint primitive;
+};
+
+INLINE TexCoord tex_coord_mesh(vec2 uv, uint shape, uint primitive, vec2 barycentrics) {
+  TexCoord c;
+  c.uv = uv;
+  c.barycentrics = barycentrics;
+  c.shape = shape;
+  c.primitive = primitive;
+  return c;
+}
+
+// A point known only by its uv (no mesh attributes).
+INLINE TexCoord tex_coord(vec2 uv) { return tex_coord_mesh(uv, NO_INDEX, 0u, vec2(0.0f)); }
 
 INLINE vec3 texture_texel(Texture t, int i, int j) {
   int x = texture_wrap(i, int(t.width), t.wrap_mode);
@@ -64,13 +87,54 @@ INLINE vec3 eval_texture(uint texture, vec2 uv) {
   return w0.y * (w0.x * v00 + w1.x * v10) + w1.y * (w0.x * v01 + w1.x * v11);
 }
 
+// Value i of a mesh attribute of `dim` (1 or 3) values per element starting at `offset` in the
+// attribute buffer; a single channel is broadcast, as Mitsuba's eval turns it into a spectrum.
+INLINE vec3 mesh_attribute_value(uint offset, uint dim, uint i) {
+  uint first = offset + dim * i;
+  if (dim == 1u) return vec3(uintBitsToFloat(scene_attribute(first)));
+  return vec3(uintBitsToFloat(scene_attribute(first)), uintBitsToFloat(scene_attribute(first + 1u)),
+              uintBitsToFloat(scene_attribute(first + 2u)));
+}
+
+// Mitsuba `mesh_attribute` (src/textures/mesh_attribute.cpp; Mesh::interpolate_attribute in
+// include/mitsuba/render/mesh.h): a vertex_* attribute is interpolated barycentrically as
+// v0 b0 + (v1 b1 + v2 b2), a face_* attribute is constant over its triangle; both times
+// `scale`. The mesh's table (Shape.attribute_table) holds, per attribute slot, the offset of
+// its values and their count per element; the loader checks that every mesh a mesh_attribute
+// texture can be evaluated on has the attribute, with 1 or 3 values (1 for scalar parameters).
+INLINE vec3 eval_mesh_attribute(Texture t, TexCoord c) {
+  Shape s = scene_shape(c.shape);
+  uint entry = s.attribute_table + 2u * t.attribute_slot;
+  uint offset = scene_attribute(entry);
+  uint dim = scene_attribute(entry + 1u);
+  vec3 value;
+  if (t.attribute_per_face != 0u) {
+    value = mesh_attribute_value(offset, dim, c.primitive);
+  } else {
+    uint base = s.first_index + 3u * c.primitive;
+    vec3 v0 = mesh_attribute_value(offset, dim, scene_index(base));
+    vec3 v1 = mesh_attribute_value(offset, dim, scene_index(base + 1u));
+    vec3 v2 = mesh_attribute_value(offset, dim, scene_index(base + 2u));
+    float b1 = c.barycentrics.x;
+    float b2 = c.barycentrics.y;
+    value = v0 * (1.0f - b1 - b2) + (v1 * b1 + v2 * b2);
+  }
+  return value * t.color0.x;
+}
+
 // A constant, or the texture lookup when the value is textured.
-INLINE vec3 eval_textured(TexturedValue v, vec2 uv) {
+INLINE vec3 eval_textured(TexturedValue v, TexCoord c) {
+  if (TR_HAS_TEXTURE(TEXTURE_MESH_ATTRIBUTE) && v.texture != NO_INDEX) {
+    Texture t = scene_texture(v.texture);
+    if (t.type == TEXTURE_MESH_ATTRIBUTE) return eval_mesh_attribute(t, c);
+  }
   if ((TR_HAS_TEXTURE(TEXTURE_BITMAP) || TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD)) &&
       v.texture != NO_INDEX)
-    return eval_texture(v.texture, uv);
+    return eval_texture(v.texture, c.uv);
   return v.value;
 }
+
+INLINE vec3 eval_textured(TexturedValue v, vec2 uv) { return eval_textured(v, tex_coord(uv)); }
 
 // Mitsuba's Texture::eval_1_grad of a bitmap (src/textures/bitmap.cpp): the uv gradient of the
 // bilinear interpolation of the (scalar) texels, zero with nearest filtering. Like Mitsuba, the

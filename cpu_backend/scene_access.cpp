@@ -22,6 +22,7 @@ vec3 scene_position(uint v) { return vec3(g_buffers->positions[v]); }
 vec3 scene_normal(uint v) { return vec3(g_buffers->normals[v]); }
 vec2 scene_uv(uint v) { return g_buffers->uvs[v]; }
 uint scene_index(uint i) { return g_buffers->indices[i]; }
+uint scene_attribute(uint i) { return g_buffers->attributes[i]; }
 float scene_filter_table(uint i) { return g_buffers->globals.camera.filter_table[i >> 2u][i & 3u]; }
 uint scene_aov_type(uint i) { return g_buffers->globals.integrator.aov_types[i >> 2u][i & 3u]; }
 float scene_filter_cdf(uint k) { return g_buffers->globals.camera.filter_cdf[k >> 2u][k & 3u]; }

@@ -33,6 +33,7 @@ GpuScene::GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptor
   buffers_[BINDING_NORMALS] = upload_vector(device, scene.normals, storage);
   buffers_[BINDING_UVS] = upload_vector(device, scene.uvs, storage);
   buffers_[BINDING_INDICES] = upload_vector(device, scene.indices, build_input);
+  buffers_[BINDING_ATTRIBUTES] = upload_vector(device, scene.attributes, storage);
   GeometryLayout geometry = geometry_layout(scene);
   buffers_[BINDING_GEOMETRY_SHAPES] = upload_vector(device, geometry.table, storage);
   accel_ = std::make_unique<SceneAccel>(device, scene, geometry, buffers_[BINDING_POSITIONS],

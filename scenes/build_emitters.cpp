@@ -157,6 +157,14 @@ void SceneBuilder::add_emitter(Node& n) {
   emitters_.push_back(pe);
 }
 
+// A mesh_attribute texture is evaluated on the shape hit; an emitter's texture has none.
+void SceneBuilder::refuse_mesh_attribute(Node& emitter, const char* name,
+                                         const TexturedValue& v) const {
+  if (v.texture != NO_INDEX && b_.textures[v.texture].type == TEXTURE_MESH_ATTRIBUTE)
+    fail(find_property(emitter, name)->loc, describe(emitter), ": '", name,
+         "' cannot be a mesh_attribute texture (it is not evaluated on a mesh)");
+}
+
 // Mitsuba 3.8 `spot` (src/emitters/spot.cpp), parameter by parameter:
 //   intensity     emitted intensity (W/sr), a colour or spectrum, not a texture; 1
 //   texture       optional spatially varying texture over the cone (a bitmap or checkerboard)
@@ -169,6 +177,7 @@ Emitter SceneBuilder::build_spot(Node& n) {
   e.radiance = vec3(emitter_color(n, "intensity"));
   if (has_property(n, "texture")) {
     TexturedValue t = textured(n, "texture", glm::dvec3(1.0), false);
+    refuse_mesh_attribute(n, "texture", t);
     if (t.texture == NO_INDEX)
       fail(find_property(n, "texture")->loc, describe(n),
            ": 'texture' must be spatially varying (a bitmap or checkerboard), as in Mitsuba");
@@ -197,6 +206,7 @@ Emitter SceneBuilder::build_projector(Node& n) {
   Emitter e = blank_emitter(EMITTER_PROJECTOR);
   Property* p = find_property(n, "irradiance");
   TexturedValue irradiance = textured(n, "irradiance", glm::dvec3(1.0), false);
+  refuse_mesh_attribute(n, "irradiance", irradiance);
   if (irradiance.texture == NO_INDEX && glm::any(glm::lessThan(irradiance.value, vec3(0.0f))))
     fail(p->loc, describe(n),
          ": a negative 'irradiance' is not supported by twinray (Mitsuba accepts negative "

@@ -194,8 +194,9 @@ uint SceneBuilder::texture(Node& tex, bool scalar) {
   t.wrap_mode = WRAP_REPEAT;
   t.texel_offset = 0u;
   t.width = t.height = 0u;
-  t.pad0 = t.pad1 = 0u;
+  t.attribute_slot = t.attribute_per_face = 0u;
   t.color0 = t.color1 = vec4(0.0f);
+  if (tex.type == "mesh_attribute") return mesh_attribute_texture(tex, t, scalar);
   glm::dmat4 to_uv = take_transform(tex, "to_uv");
   // Rows of the 2D affine map: rows/columns 0, 1 and 3 of the 4x4 transform.
   t.to_uv[0] = vec4(float(to_uv[0][0]), float(to_uv[1][0]), float(to_uv[3][0]), 0.0f);
@@ -262,12 +263,36 @@ uint SceneBuilder::texture(Node& tex, bool scalar) {
     t.color0 = vec4(vec3(c0), 1.0f);
     t.color1 = vec4(vec3(c1), 1.0f);
   } else {
-    fail(tex.loc, "unknown texture type \"", tex.type, "\" (supported: bitmap, checkerboard)");
+    fail(tex.loc, "unknown texture type \"", tex.type,
+         "\" (supported: bitmap, checkerboard, mesh_attribute)");
   }
   check_consumed(tex);
   uint index = uint(b_.textures.size());
   b_.textures.push_back(t);
   texture_cache_[key] = index;
+  return index;
+}
+
+// Mitsuba 3.8 `mesh_attribute` (src/textures/mesh_attribute.cpp): `name` (required; Mitsuba
+// refuses a name containing neither "vertex_" nor "face_") and `scale` (1). Which meshes it is
+// evaluated on, and whether they have the attribute, is known once the shapes are read
+// (SceneBuilder::bind_mesh_attributes).
+uint SceneBuilder::mesh_attribute_texture(Node& tex, Texture& t, bool scalar) {
+  std::string name = take_string(tex, "name");
+  if (name.find("vertex_") == std::string::npos && name.find("face_") == std::string::npos)
+    fail(find_property(tex, "name")->loc, describe(tex), ": invalid attribute name \"", name,
+         "\": it must start with \"vertex_\" or \"face_\" (as Mitsuba requires)");
+  t.type = TEXTURE_MESH_ATTRIBUTE;
+  t.color0 = vec4(float(take_float(tex, "scale", 1.0)), 0.0f, 0.0f, 0.0f);
+  auto slot = std::find(attribute_names_.begin(), attribute_names_.end(), name);
+  t.attribute_slot = uint(slot - attribute_names_.begin());
+  if (slot == attribute_names_.end()) attribute_names_.push_back(name);
+  t.attribute_per_face = name.rfind("face_", 0) == 0 ? 1u : 0u;
+  check_consumed(tex);
+  uint index = uint(b_.textures.size());
+  b_.textures.push_back(t);
+  texture_cache_[std::make_pair(static_cast<const Node*>(&tex), scalar)] = index;
+  mesh_attribute_reads_[index] = {name, tex.loc, scalar ? 1 : 0};
   return index;
 }
 
@@ -343,6 +368,10 @@ TexturedValue SceneBuilder::roughplastic_table(const Material& m) {
 double SceneBuilder::textured_mean(const TexturedValue& v) const {
   if (v.texture == NO_INDEX) return (double(v.value.x) + v.value.y + v.value.z) / 3.0;
   const Texture& t = b_.textures[v.texture];
+  if (t.type == TEXTURE_MESH_ATTRIBUTE)
+    fail(mesh_attribute_reads_.at(v.texture).loc,
+         "a mesh_attribute texture has no mean, which this BSDF needs (Mitsuba 3.8 raises "
+         "NotImplementedError for Texture::mean there)");
   if (t.type == TEXTURE_CHECKERBOARD)
     return (double(t.color0.x) + t.color0.y + t.color0.z + t.color1.x + t.color1.y + t.color1.z) /
            6.0;
@@ -485,6 +514,9 @@ Material SceneBuilder::build_material(Node& n) {
     if (!has_property(n, "normalmap")) fail(n.loc, describe(n), " needs a 'normalmap' texture");
     m = empty_material(BSDF_NORMALMAP);
     m.param[NORMALMAP_NORMALMAP] = textured(n, "normalmap", glm::dvec3(0.5, 0.5, 1.0), false);
+    // Mitsuba's normalmap reads its texture with eval_3: a mesh attribute needs 3 channels.
+    auto read = mesh_attribute_reads_.find(m.param[NORMALMAP_NORMALMAP].texture);
+    if (read != mesh_attribute_reads_.end()) read->second.channels = 3;
     bool flip = take_bool(n, "flip_invalid_normals", true);
     bool shadowing = take_bool(n, "use_shadowing_function", true);
     m.param[NORMALMAP_OPTIONS] =

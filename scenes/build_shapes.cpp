@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/frame.h"
+#include "core/material_slots.h"
 #include "scenes/alias_table.h"
 #include "scenes/scene_builder.h"
 #include "scenes/serialized.h"
@@ -96,7 +97,8 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   r.flags = 0u;
   r.emitter = NO_INDEX;
   r.first_index = r.triangle_count = r.first_vertex = r.vertex_count = 0u;
-  r.scene_index = r.prim_offset = r.pad2 = 0u;
+  r.scene_index = r.prim_offset = 0u;
+  r.attribute_table = NO_INDEX;
   set_transforms(r, glm::dmat4(1.0));
 
   glm::dmat4 to_world = take_transform(n, "to_world");
@@ -142,6 +144,9 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
     bool face_normals = take_bool(n, "face_normals", false);  // every Mitsuba mesh reads it
     if (from_file) {
       s.mesh = mesh_file(n);
+      // Mitsuba 3.8's serialized loader skips the vertex colors (src/shapes/serialized.cpp):
+      // such a mesh has no attributes there.
+      if (type == "serialized") s.mesh.attributes.clear();
     } else {
       s.mesh = type == "rectangle" ? make_rectangle() : make_cube();
     }
@@ -204,7 +209,64 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
          "shapegroup, instance)");
   }
   check_consumed(n);
+  bind_mesh_attributes(n, s);
   out.push_back(std::move(s));
+}
+
+void SceneBuilder::collect_mesh_attribute_textures(uint material,
+                                                   std::vector<uint>& textures) const {
+  const Material& m = b_.materials[material];
+  auto add = [&](const TexturedValue& v) {
+    if (v.texture != NO_INDEX && b_.textures[v.texture].type == TEXTURE_MESH_ATTRIBUTE &&
+        std::find(textures.begin(), textures.end(), v.texture) == textures.end())
+      textures.push_back(v.texture);
+  };
+  add(m.opacity);
+  for (const TexturedValue& v : m.param) add(v);
+  if (m.type == BSDF_BLEND) {
+    collect_mesh_attribute_textures(uint(m.param[BLEND_BSDF_0].value.x), textures);
+    collect_mesh_attribute_textures(uint(m.param[BLEND_BSDF_1].value.x), textures);
+  } else if (m.type == BSDF_NORMALMAP || m.type == BSDF_BUMPMAP) {
+    collect_mesh_attribute_textures(uint(m.param[NORMALMAP_BSDF].value.x), textures);
+  }
+}
+
+// Mitsuba evaluates a mesh_attribute texture through the shape hit (Shape::eval_attribute),
+// and fails while rendering when that shape has no such attribute or one of a size the
+// evaluation cannot take (src/render/mesh.cpp: eval takes 1 or 3 channels, eval_1 1, eval_3 3);
+// here each case is an error when loading.
+void SceneBuilder::bind_mesh_attributes(Node& n, PendingShape& s) {
+  std::vector<uint> textures;
+  collect_mesh_attribute_textures(s.record.material, textures);
+  for (uint t : textures) {
+    const MeshAttributeRead& read = mesh_attribute_reads_.at(t);
+    const std::string where = read.loc.file + ":" + std::to_string(read.loc.line);
+    auto it = s.mesh.attributes.find(read.name);
+    if (s.record.type != SHAPE_MESH || it == s.mesh.attributes.end()) {
+      std::string present;
+      for (const auto& [name, a] : s.mesh.attributes)
+        present += (present.empty() ? "" : ", ") + name;
+      fail(n.loc, describe(n), " has no mesh attribute \"", read.name,
+           "\", which the mesh_attribute texture at ", where, " reads (",
+           s.record.type != SHAPE_MESH ? "only meshes have attributes"
+           : present.empty()           ? "it has none"
+                                       : "it has: " + present,
+           ")");
+    }
+    const int dim = it->second.dim;
+    const bool ok = read.channels == 0 ? dim == 1 || dim == 3 : dim == read.channels;
+    if (!ok)
+      fail(n.loc, describe(n), ": its mesh attribute \"", read.name, "\" has ", dim,
+           " channels; the mesh_attribute texture at ", where, " is read as ",
+           read.channels == 0   ? "a color (1 or 3 channels"
+           : read.channels == 1 ? "a scalar (1 channel"
+                                : "a normal map (3 channels",
+           ", as in Mitsuba)");
+    uint slot = b_.textures[t].attribute_slot;
+    if (std::find(s.attribute_slots.begin(), s.attribute_slots.end(), slot) ==
+        s.attribute_slots.end())
+      s.attribute_slots.push_back(slot);
+  }
 }
 
 void SceneBuilder::add_shapegroup(Node& g) {
@@ -256,7 +318,8 @@ void SceneBuilder::number_shapes_as_mitsuba() {
   std::vector<MergedMesh> merged;
   auto mergeable = [&](const PendingShape& a, const PendingShape& b) {
     const uint attributes = SHAPE_HAS_NORMALS | SHAPE_HAS_UVS;
-    return !a.emitting && !b.emitting &&
+    // Mitsuba's Mesh::merge refuses meshes with mesh attributes (src/render/mesh.cpp).
+    return !a.emitting && !b.emitting && a.mesh.attributes.empty() && b.mesh.attributes.empty() &&
            (a.record.flags & attributes) == (b.record.flags & attributes) &&
            std::memcmp(&b_.materials[a.record.material], &b_.materials[b.record.material],
                        sizeof(Material)) == 0;
@@ -288,6 +351,18 @@ void SceneBuilder::finalize_shapes() {
         b_.uvs.push_back(s.mesh.uvs.empty() ? vec2(0.0f) : vec2(s.mesh.uvs[v]));
       }
       b_.indices.insert(b_.indices.end(), s.mesh.indices.begin(), s.mesh.indices.end());
+      if (!s.attribute_slots.empty()) {
+        // Table: per slot, the offset of the values and their count per element
+        // (core/texture.h, eval_mesh_attribute); then the values read, as float bits.
+        r.attribute_table = uint(b_.attributes.size());
+        b_.attributes.resize(b_.attributes.size() + 2 * attribute_names_.size(), 0u);
+        for (uint slot : s.attribute_slots) {
+          const VertexAttribute& a = s.mesh.attributes.at(attribute_names_[slot]);
+          b_.attributes[r.attribute_table + 2 * slot] = uint(b_.attributes.size());
+          b_.attributes[r.attribute_table + 2 * slot + 1] = uint(a.dim);
+          for (float v : a.values) b_.attributes.push_back(glm::floatBitsToUint(v));
+        }
+      }
     }
     if (s.emitting) {
       Emitter e{};

@@ -9,10 +9,11 @@
 
 namespace tr {
 
-// Per-vertex data a texture may read by name (Mitsuba's "vertex_*" mesh attributes).
+// Per-vertex or per-triangle data a texture may read by name (Mitsuba's mesh attributes: a
+// name starting with "vertex_" has `dim` values per vertex, "face_" per triangle).
 struct VertexAttribute {
   int dim = 0;
-  std::vector<float> values;  // dim per vertex
+  std::vector<float> values;
 };
 
 struct TriangleMesh {
@@ -24,8 +25,9 @@ struct TriangleMesh {
   std::map<std::string, VertexAttribute> attributes;
 };
 
-// Loads every triangle of an OBJ or PLY file (Assimp) into one mesh, with the file's normals
-// and uvs if it has them; uv.y = 1 - uv.y when `flip_tex_coords` (Mitsuba's OBJ default).
+// Loads every triangle of an OBJ (Assimp) or PLY file (Mitsuba's PLY semantics, with its mesh
+// attributes) into one mesh, with the file's normals and uvs if it has them; uv.y = 1 - uv.y
+// when `flip_tex_coords` (Mitsuba's OBJ default).
 // Throws std::runtime_error with a one-line reason.
 TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords);
 

@@ -70,7 +70,7 @@ const Entry TABLE[] = {
     // textures
     {"texture", "bitmap", PluginSupport::Supported, ""},
     {"texture", "checkerboard", PluginSupport::Supported, ""},
-    {"texture", "mesh_attribute", PluginSupport::Planned, PLUGINS_ISSUE},
+    {"texture", "mesh_attribute", PluginSupport::Supported, ""},
     {"texture", "volume", PluginSupport::OutOfScope, MEDIA},
     // emitters
     {"emitter", "area", PluginSupport::Supported, ""},

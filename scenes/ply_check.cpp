@@ -1,6 +1,7 @@
 #include "scenes/ply_check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -26,22 +27,27 @@ int type_size(const std::string& t) {
   return it->second;
 }
 
+}  // namespace
+
+bool ply_is_integer(const std::string& t) {
+  return t != "float" && t != "float32" && t != "double" && t != "float64";
+}
+
+double ply_integer_max(const std::string& t) {
+  const int bits = 8 * type_size(t);
+  const bool is_signed_type =
+      t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+  return std::ldexp(1.0, is_signed_type ? bits - 1 : bits) - 1.0;
+}
+
+namespace {
+
 bool is_float(const std::string& t) {
   return t == "float" || t == "float32" || t == "double" || t == "float64";
 }
 bool is_signed(const std::string& t) {
   return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
 }
-
-struct Property {
-  std::string name, type, count_type;  // count_type non-empty: a list
-};
-
-struct Element {
-  std::string name;
-  std::uint64_t count = 0;
-  std::vector<Property> properties;
-};
 
 enum class Format { Ascii, LittleEndian, BigEndian };
 
@@ -74,10 +80,6 @@ class BinaryBody {
     if (is_signed(type) && n < 8 && (u >> (8 * n - 1)) & 1u) u |= ~std::uint64_t(0) << (8 * n);
     return is_signed(type) ? double(std::int64_t(u)) : double(u);
   }
-  void skip(std::uint64_t bytes) {
-    if (data_.size() - offset_ < bytes) fail("the file ends before the data its header declares");
-    offset_ += bytes;
-  }
   size_t offset() const { return offset_; }
 
  private:
@@ -88,7 +90,7 @@ class BinaryBody {
 
 }  // namespace
 
-void check_ply_file(const std::string& path) {
+std::vector<PlyElement> read_ply_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail("cannot open the file");
   const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -107,7 +109,7 @@ void check_ply_file(const std::string& path) {
   if (line != "ply") fail("the file does not start with 'ply'");
   Format format = Format::Ascii;
   bool have_format = false;
-  std::vector<Element> elements;
+  std::vector<PlyElement> elements;
   for (;;) {
     next_line(line);
     std::istringstream words(line);
@@ -128,7 +130,7 @@ void check_ply_file(const std::string& path) {
         fail("unknown format '" + f + "'");
       have_format = true;
     } else if (word == "element") {
-      Element e;
+      PlyElement e;
       std::string count;
       words >> e.name >> count;
       if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos ||
@@ -138,7 +140,7 @@ void check_ply_file(const std::string& path) {
       elements.push_back(e);
     } else if (word == "property") {
       if (elements.empty()) fail("a property before any element");
-      Property p;
+      PlyProperty p;
       std::string type;
       words >> type;
       if (type == "list") {
@@ -161,9 +163,9 @@ void check_ply_file(const std::string& path) {
   // and faces, if any, as a list of vertex indices.
   std::uint64_t vertices = 0;
   bool have_vertices = false;
-  for (const Element& e : elements) {
+  for (const PlyElement& e : elements) {
     auto has = [&](const char* name, bool list) {
-      for (const Property& p : e.properties)
+      for (const PlyProperty& p : e.properties)
         if (p.name == name && p.count_type.empty() != list) return true;
       return false;
     };
@@ -177,18 +179,22 @@ void check_ply_file(const std::string& path) {
     }
   }
   if (!have_vertices) fail("the file has no vertex element");
-  auto is_face_indices = [](const Element& e, const Property& p) {
+  auto is_face_indices = [](const PlyElement& e, const PlyProperty& p) {
     return e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
   };
-  auto check_face_size = [&](const Element& e, const Property& p, double n) {
-    if (is_face_indices(e, p) && n < 3.0)
-      fail("a face with " + std::to_string(std::int64_t(n)) + " vertices (at least 3)");
+  auto add_face_size = [&](PlyElement& e, const PlyProperty& p, double n) {
+    if (!is_face_indices(e, p)) return;
+    if (n < 3.0) fail("a face with " + std::to_string(std::int64_t(n)) + " vertices (at least 3)");
+    e.face_sizes.push_back(std::uint32_t(n));
   };
-  auto check_index = [&](const Element& e, const Property& p, double v) {
-    if (is_face_indices(e, p) && !(v >= 0.0 && v < double(vertices)))
+  auto add_index = [&](PlyElement& e, const PlyProperty& p, double v) {
+    if (!is_face_indices(e, p)) return;
+    if (!(v >= 0.0 && v < double(vertices)))
       fail("face vertex index " + std::to_string(std::int64_t(v)) + " outside the " +
            std::to_string(vertices) + " vertices");
+    e.face_indices.push_back(std::uint32_t(v));
   };
+  for (PlyElement& e : elements) e.columns.resize(e.properties.size());
 
   if (format == Format::Ascii) {
     std::istringstream body(data.substr(pos));
@@ -200,47 +206,49 @@ void check_ply_file(const std::string& path) {
       if (*end != '\0') fail("'" + token + "' is not a number");
       return v;
     };
-    for (const Element& e : elements)
+    for (PlyElement& e : elements)
       for (std::uint64_t i = 0; i < e.count; ++i)
-        for (const Property& p : e.properties) {
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+          const PlyProperty& p = e.properties[k];
           if (p.count_type.empty()) {
-            value();
+            e.columns[k].push_back(value());
             continue;
           }
           const double n = value();
           if (!(n >= 0.0) || n > 1e9) fail("a list length of " + token);
-          check_face_size(e, p, n);
-          for (std::uint64_t k = 0; k < std::uint64_t(n); ++k) check_index(e, p, value());
+          add_face_size(e, p, n);
+          for (std::uint64_t c = 0; c < std::uint64_t(n); ++c) add_index(e, p, value());
         }
-    return;
+    return elements;
   }
 
   BinaryBody body(data, pos, format == Format::BigEndian);
-  for (const Element& e : elements) {
+  for (PlyElement& e : elements) {
     bool fixed = true;
     std::uint64_t item_bytes = 0;
-    for (const Property& p : e.properties) {
+    for (const PlyProperty& p : e.properties) {
       fixed &= p.count_type.empty();
       item_bytes += std::uint64_t(type_size(p.type));
     }
-    if (fixed) {  // fixed-size items: only the total length matters
-      if (e.count > (data.size() - body.offset()) / std::max<std::uint64_t>(item_bytes, 1))
-        fail("the file ends before the data its header declares");
-      body.skip(e.count * item_bytes);
-      continue;
-    }
+    // Fixed-size items: the length is known before anything is allocated.
+    if (fixed && e.count > (data.size() - body.offset()) / std::max<std::uint64_t>(item_bytes, 1))
+      fail("the file ends before the data its header declares");
+    if (fixed)
+      for (std::vector<double>& column : e.columns) column.reserve(e.count);
     for (std::uint64_t i = 0; i < e.count; ++i)
-      for (const Property& p : e.properties) {
+      for (size_t k = 0; k < e.properties.size(); ++k) {
+        const PlyProperty& p = e.properties[k];
         if (p.count_type.empty()) {
-          body.read(p.type);
+          e.columns[k].push_back(body.read(p.type));
           continue;
         }
         const double n = body.read(p.count_type);
         if (!(n >= 0.0)) fail("a negative list length");
-        check_face_size(e, p, n);
-        for (std::uint64_t k = 0; k < std::uint64_t(n); ++k) check_index(e, p, body.read(p.type));
+        add_face_size(e, p, n);
+        for (std::uint64_t c = 0; c < std::uint64_t(n); ++c) add_index(e, p, body.read(p.type));
       }
   }
+  return elements;
 }
 
 }  // namespace tr

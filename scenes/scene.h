@@ -31,6 +31,7 @@ struct SceneBuffers {
   std::vector<vec4> normals;
   std::vector<vec2> uvs;
   std::vector<uint> indices;
+  std::vector<uint> attributes;  // mesh attributes: per-mesh tables, values as float bits
 };
 
 struct Scene {

@@ -27,6 +27,7 @@ struct PendingShape {
   glm::vec3 radiance{0.0f};
   double sampling_weight = 1.0;
   Location emitter_loc;
+  std::vector<uint> attribute_slots;  // Texture.attribute_slot of each attribute read
 };
 
 struct PendingGroup {
@@ -65,6 +66,16 @@ class SceneBuilder {
   TexturedValue textured(Node& owner, const std::string& name, glm::dvec3 default_value,
                          bool scalar);
   uint texture(Node& tex, bool scalar);
+  uint mesh_attribute_texture(Node& tex, Texture& t, bool scalar);
+  // mesh_attribute textures: the attribute names by Texture.attribute_slot, and per texture
+  // record what it reads and how (channels: 0 Mitsuba's eval, 1 or 3 for eval_1 or eval_3).
+  struct MeshAttributeRead {
+    std::string name;
+    Location loc;
+    int channels = 0;
+  };
+  std::vector<std::string> attribute_names_;
+  std::map<uint, MeshAttributeRead> mesh_attribute_reads_;
   // Linear RGBA texels of an image file appended to texels (shared between identical loads);
   // returns the first texel and the size.
   std::pair<uint, glm::uvec2> load_texels(Node& owner, const std::string& file_name, bool raw,
@@ -87,6 +98,10 @@ class SceneBuilder {
   // that select what is read from it).
   const TriangleMesh& mesh_file(Node& shape);
   void add_shape(Node& shape, std::vector<PendingShape>& out, bool in_group);
+  // Checks that the shape has every mesh attribute its material's textures read, with a
+  // channel count Mitsuba accepts there, and records which (PendingShape::attribute_slots).
+  void bind_mesh_attributes(Node& shape, PendingShape& s);
+  void collect_mesh_attribute_textures(uint material, std::vector<uint>& textures) const;
   void add_shapegroup(Node& group);
   void add_instance(Node& instance);
   // Top-level shapes (false, index into top_shapes_) and instances (true, into instances_) in
@@ -106,6 +121,7 @@ class SceneBuilder {
   std::vector<std::pair<double, Location>> emitter_weights_;
   void add_emitter(Node& emitter);
   Emitter build_spot(Node& emitter);
+  void refuse_mesh_attribute(Node& emitter, const char* name, const TexturedValue& v) const;
   Emitter build_projector(Node& emitter);
   void finalize_emitters();
   // Mitsuba 3's per-emitter `sampling_weight` (src/render/emitter.cpp): finite, >= 0, default 1.

@@ -19,6 +19,7 @@ std::string scene_digest(const Scene& scene) {
   f.add_vector(b.normals);
   f.add_vector(b.uvs);
   f.add_vector(b.indices);
+  f.add_vector(b.attributes);
   return f.hex();
 }
 

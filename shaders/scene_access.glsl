@@ -18,6 +18,7 @@ layout(std430, set = 0, binding = BINDING_POSITIONS) readonly buffer PositionBuf
 layout(std430, set = 0, binding = BINDING_NORMALS) readonly buffer NormalBuffer { vec4 g_normals[]; };
 layout(std430, set = 0, binding = BINDING_UVS) readonly buffer UvBuffer { vec2 g_uvs[]; };
 layout(std430, set = 0, binding = BINDING_INDICES) readonly buffer IndexBuffer { uint g_indices[]; };
+layout(std430, set = 0, binding = BINDING_ATTRIBUTES) readonly buffer AttributeBuffer { uint g_attributes[]; };
 
 SceneGlobals scene_globals() { return g_globals; }
 Material scene_material(uint i) { return g_materials[i]; }
@@ -31,6 +32,7 @@ vec3 scene_position(uint v) { return g_positions[v].xyz; }
 vec3 scene_normal(uint v) { return g_normals[v].xyz; }
 vec2 scene_uv(uint v) { return g_uvs[v]; }
 uint scene_index(uint i) { return g_indices[i]; }
+uint scene_attribute(uint i) { return g_attributes[i]; }
 float scene_filter_table(uint i) { return g_globals.camera.filter_table[i >> 2u][i & 3u]; }
 uint scene_aov_type(uint i) { return g_globals.integrator.aov_types[i >> 2u][i & 3u]; }
 float scene_filter_cdf(uint k) { return g_globals.camera.filter_cdf[k >> 2u][k & 3u]; }

@@ -32,7 +32,7 @@ TR_NAMESPACE_BEGIN
 // depth-first walk within BLEND_STACK_SIZE = BLEND_MAX_DEPTH + 1 entries.
 const uint BLEND_STACK_SIZE = BLEND_MAX_DEPTH + 1u;
 
-INLINE float blend_weight(Material m, vec2 uv) {
+INLINE float blend_weight(Material m, TexCoord uv) {
   return clamp(eval_textured_1(m.param[BLEND_WEIGHT], uv), 0.0f, 1.0f);
 }
 
@@ -58,7 +58,7 @@ INLINE void blend_push(INOUT(BlendStack) st, uint node, float weight, uint path,
   st.size += 1u;
 }
 
-INLINE void blend_push_children(INOUT(BlendStack) st, Material blend, vec2 uv, float weight,
+INLINE void blend_push_children(INOUT(BlendStack) st, Material blend, TexCoord uv, float weight,
                                 uint path, uint inherited_flags) {
   // The loader bounds the nesting depth (BLEND_MAX_DEPTH), so the stack never overflows.
   if (st.size + 2u > BLEND_STACK_SIZE) return;
@@ -68,7 +68,7 @@ INLINE void blend_push_children(INOUT(BlendStack) st, Material blend, vec2 uv, f
   blend_push(st, blend_child(blend, 1u), weight * w, 2u * path + 1u, flags);
 }
 
-INLINE BlendStack blend_walk(Material root, vec2 uv) {
+INLINE BlendStack blend_walk(Material root, TexCoord uv) {
   BlendStack st;
   st.size = 0u;
   blend_push_children(st, root, uv, 1.0f, 1u, 0u);
@@ -76,8 +76,8 @@ INLINE BlendStack blend_walk(Material root, vec2 uv) {
 }
 
 // Pops entries until a leaf comes up, expanding blends on the way; false when the walk is over.
-INLINE bool blend_next_leaf(INOUT(BlendStack) st, vec2 uv, OUT(Material) leaf, OUT(float) weight,
-                            OUT(uint) path) {
+INLINE bool blend_next_leaf(INOUT(BlendStack) st, TexCoord uv, OUT(Material) leaf,
+                            OUT(float) weight, OUT(uint) path) {
   while (st.size > 0u) {
     st.size -= 1u;
     Material m = scene_material(st.node[st.size]);
@@ -95,7 +95,7 @@ INLINE bool blend_next_leaf(INOUT(BlendStack) st, vec2 uv, OUT(Material) leaf, O
 }
 
 // Mitsuba's m_flags: the union of the children's flags, whatever the weight.
-INLINE uint blend_flags(Material m, vec2 uv) {
+INLINE uint blend_flags(Material m, TexCoord uv) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -105,7 +105,7 @@ INLINE uint blend_flags(Material m, vec2 uv) {
   return flags;
 }
 
-INLINE vec3 blend_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 blend_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -116,7 +116,7 @@ INLINE vec3 blend_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return value;
 }
 
-INLINE float blend_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float blend_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -127,7 +127,7 @@ INLINE float blend_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
   return pdf;
 }
 
-INLINE BsdfSample blend_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample blend_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   // Descend to one leaf, reusing u1 at each blend (child 1 when u1 <= w, as Mitsuba; the
   // rescaled u1 stays below 1 so that leaves see a sample in [0, 1)).
   Material node = m;

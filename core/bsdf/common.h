@@ -72,7 +72,7 @@ INLINE BsdfSample bsdf_sample_smooth(vec3 wo, float pdf, vec3 value, float eta, 
 // A scalar parameter (Mitsuba's Texture::eval_1): the loader stores scalar parameters already
 // reduced as eval_1 reduces them (a bitmap's luminance, a constant color's channel mean), in
 // every channel, so the first channel is the value.
-INLINE float eval_textured_1(TexturedValue v, vec2 uv) { return eval_textured(v, uv).x; }
+INLINE float eval_textured_1(TexturedValue v, TexCoord uv) { return eval_textured(v, uv).x; }
 
 // drjit::mulsign: x with the sign of s (s = 0 counts as positive).
 INLINE float mulsign(float x, float s) { return s >= 0.0f ? x : -x; }

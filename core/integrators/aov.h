@@ -43,7 +43,7 @@ INLINE vec3 aov_value(uint type, AovPoint a) {
   if (a.hit.shape == NO_INDEX) return vec3(0.0f);
   SurfaceInteraction si = a.si;
   if (TR_HAS_AOV(AOV_ALBEDO) && type == AOV_ALBEDO)
-    return bsdf_diffuse_reflectance(scene_material(si.material), si.uv, si.wi);
+    return bsdf_diffuse_reflectance(scene_material(si.material), surface_tex_coord(si), si.wi);
   if (TR_HAS_AOV(AOV_DEPTH) && type == AOV_DEPTH) return vec3(si.t, 0.0f, 0.0f);
   if (TR_HAS_AOV(AOV_POSITION) && type == AOV_POSITION) return si.p;
   if (TR_HAS_AOV(AOV_UV) && type == AOV_UV) return vec3(si.uv, 0.0f);

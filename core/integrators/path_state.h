@@ -6,6 +6,7 @@
 #include "core/frame.h"
 #include "core/ray.h"
 #include "core/rng.h"
+#include "core/texture.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -19,8 +20,8 @@ struct ShadingPoint {
   uint pad0;
   vec3 wi;  // towards the previous vertex, local to frame
   float pad1;
-  vec2 uv;
-  vec3 dp_du;  // world space
+  TexCoord tex;  // where its textures are evaluated
+  vec3 dp_du;    // world space
   vec3 dp_dv;
 };
 

@@ -16,10 +16,10 @@ constexpr uint32_t kWorkgroup = 64;     // local_size_x of bsdf_probe.comp
 constexpr uint32_t kMaxGroups = 65535;  // per dispatch (maxComputeWorkGroupCount minimum)
 // Queries per batch: 64 MiB of queries, within the 128 MiB maxStorageBufferRange minimum.
 constexpr std::size_t kMaxBatch = std::size_t(1) << 20;
-constexpr uint32_t kSceneBindings[] = {BINDING_GLOBALS, BINDING_MATERIALS, BINDING_TEXTURES,
-                                       BINDING_TEXELS,  BINDING_EMITTERS,  BINDING_ALIAS,
-                                       BINDING_SHAPES,  BINDING_INSTANCES, BINDING_POSITIONS,
-                                       BINDING_NORMALS, BINDING_UVS,       BINDING_INDICES};
+constexpr uint32_t kSceneBindings[] = {
+    BINDING_GLOBALS, BINDING_MATERIALS, BINDING_TEXTURES,  BINDING_TEXELS,    BINDING_EMITTERS,
+    BINDING_ALIAS,   BINDING_SHAPES,    BINDING_INSTANCES, BINDING_POSITIONS, BINDING_NORMALS,
+    BINDING_UVS,     BINDING_INDICES,   BINDING_ATTRIBUTES};
 
 struct PushConstants {
   uint32_t first;

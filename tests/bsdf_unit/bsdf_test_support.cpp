@@ -169,5 +169,6 @@ vec3 scene_position(uint) { not_in_bsdf_tests("scene_position"); }
 vec3 scene_normal(uint) { not_in_bsdf_tests("scene_normal"); }
 vec2 scene_uv(uint) { not_in_bsdf_tests("scene_uv"); }
 uint scene_index(uint) { not_in_bsdf_tests("scene_index"); }
+uint scene_attribute(uint) { not_in_bsdf_tests("scene_attribute"); }
 
 }  // namespace tr

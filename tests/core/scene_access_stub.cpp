@@ -28,6 +28,7 @@ vec3 scene_position(uint) { unreachable("position"); }
 vec3 scene_normal(uint) { unreachable("normal"); }
 vec2 scene_uv(uint) { unreachable("uv"); }
 uint scene_index(uint) { unreachable("index"); }
+uint scene_attribute(uint) { unreachable("attribute"); }
 float scene_filter_table(uint i) { return g_camera.filter_table[i >> 2u][i & 3u]; }
 float scene_filter_cdf(uint k) { return g_camera.filter_cdf[k >> 2u][k & 3u]; }
 }  // namespace tr

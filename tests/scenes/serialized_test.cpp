@@ -448,5 +448,23 @@ TEST(SerializedErrors, CorruptedFilesFailCleanly) {
   EXPECT_GT(loaded, 0);
 }
 
+// Mitsuba 3.8 skips a serialized mesh's vertex colors: a mesh_attribute texture finds no
+// vertex_color there, and twinray refuses it when loading.
+TEST(SerializedMesh, VertexColorsAreNoMeshAttribute) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "m.serialized", serialized_file({quad(0)}, 4, false).bytes);
+  try {
+    load_with(dir, shape("m.serialized", 0,
+                         "<bsdf type=\"diffuse\"><texture type=\"mesh_attribute\" "
+                         "name=\"reflectance\"><string name=\"name\" value=\"vertex_color\"/>"
+                         "</texture></bsdf>"));
+    ADD_FAILURE() << "loaded";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no mesh attribute \"vertex_color\""),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace tr

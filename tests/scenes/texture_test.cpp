@@ -14,6 +14,9 @@ namespace tr {
 static const SceneBuffers* g_buffers = nullptr;
 Texture scene_texture(uint i) { return g_buffers->textures[i]; }
 vec4 scene_texel(uint i) { return g_buffers->texels[i]; }
+Shape scene_shape(uint i) { return g_buffers->shapes[i]; }
+uint scene_index(uint i) { return g_buffers->indices[i]; }
+uint scene_attribute(uint i) { return g_buffers->attributes[i]; }
 
 namespace {
 
@@ -119,6 +122,80 @@ TEST(Texture, CheckerboardAndTexturedValues) {
   expect_vec(eval_textured(constant, vec2(0.3f, 0.1f)), vec3(0.25f));
   TexturedValue textured{vec3(0.0f), 0u};
   expect_vec(eval_textured(textured, vec2(0.3f, 0.1f)), vec3(0, 0, 1));
+}
+
+// Mitsuba's mesh_attribute (Mesh::interpolate_attribute): vertex values interpolated with the
+// barycentrics of the hit, face values constant over the triangle, both times `scale`.
+TEST(Texture, MeshAttributesInterpolatedAndConstantPerFace) {
+  SceneBuffers b;
+  // Shape 1 is a quad (triangles 0 2 1 and 0 3 2 of its own vertices) after a triangle of
+  // shape 0, so the lookups must go through first_index; its table starts at word 2.
+  b.indices = {0, 1, 2, 0, 2, 1, 0, 3, 2};
+  Shape quad{};
+  quad.type = SHAPE_MESH;
+  quad.first_index = 3;
+  quad.attribute_table = 2;
+  b.shapes = {Shape{}, quad};
+  auto bits = [](float f) { return glm::floatBitsToUint(f); };
+  // Slot 0: vertex_c, 3 channels; slot 1: face_w, 1 channel; slot 2 unused by this mesh.
+  b.attributes = {7u, 7u, 8u, 3u, 20u, 1u, NO_INDEX, 0u};
+  const float c[4][3] = {{1, 0, 0}, {0, 2, 0}, {0, 0, 4}, {0.5f, 0.5f, 0.5f}};
+  for (const auto& v : c)
+    for (float x : v) b.attributes.push_back(bits(x));
+  b.attributes.push_back(bits(0.25f));
+  b.attributes.push_back(bits(0.75f));
+  Texture vertex{};
+  vertex.type = TEXTURE_MESH_ATTRIBUTE;
+  vertex.attribute_slot = 0u;
+  vertex.color0 = vec4(2.0f, 0, 0, 0);  // scale
+  Texture face = vertex;
+  face.attribute_slot = 1u;
+  face.attribute_per_face = 1u;
+  face.color0.x = 3.0f;
+  b.textures = {vertex, face};
+  g_buffers = &b;
+  const TexturedValue v{vec3(0.0f), 0u}, f{vec3(0.0f), 1u};
+  // Triangle 0 of the quad: vertices 0, 2, 1 with weights b0 = 1 - b1 - b2, b1, b2.
+  const vec2 bary(0.25f, 0.5f);
+  expect_vec(eval_textured(v, tex_coord_mesh(vec2(0.9f), 1u, 0u, bary)),
+             2.0f * (0.25f * vec3(1, 0, 0) + 0.25f * vec3(0, 0, 4) + 0.5f * vec3(0, 2, 0)));
+  // Triangle 1: vertices 0, 3, 2.
+  expect_vec(eval_textured(v, tex_coord_mesh(vec2(0.0f), 1u, 1u, vec2(0.5f, 0.5f))),
+             2.0f * (0.5f * vec3(0.5f) + 0.5f * vec3(0, 0, 4)));
+  // At a corner the vertex's value; the uv plays no part.
+  expect_vec(eval_textured(v, tex_coord_mesh(vec2(0.3f), 1u, 1u, vec2(1.0f, 0.0f))), vec3(1.0f));
+  // A face attribute is the same anywhere on its triangle, one channel broadcast.
+  for (vec2 at : {vec2(0.0f), vec2(1.0f, 0.0f), vec2(0.2f, 0.7f)}) {
+    expect_vec(eval_textured(f, tex_coord_mesh(vec2(0.5f), 1u, 0u, at)), vec3(0.75f));
+    expect_vec(eval_textured(f, tex_coord_mesh(vec2(0.5f), 1u, 1u, at)), vec3(2.25f));
+  }
+}
+
+// The same through the loader: a PLY's attributes, the shape's table and the texture records.
+TEST(Texture, MeshAttributesOfALoadedPly) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "tri.ply",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "property float z\nproperty float w_x\nelement face 1\n"
+             "property list uchar int vertex_indices\nproperty float r\nproperty float g\n"
+             "property float b\nend_header\n0 0 0 1\n1 0 0 2\n0 1 0 4\n3 0 1 2 0.1 0.2 0.3\n");
+  auto shape = [](const std::string& param, const std::string& name) {
+    return "<shape type=\"ply\"><string name=\"filename\" value=\"tri.ply\"/><bsdf "
+           "type=\"diffuse\"><texture type=\"mesh_attribute\" name=\"" +
+           param + "\"><string name=\"name\" value=\"" + name +
+           "\"/><float name=\"scale\" value=\"0.5\"/></texture></bsdf></shape>";
+  };
+  Scene s = load_scene(
+      write_file(dir, "scene.xml",
+                 scene_xml(shape("reflectance", "vertex_w") + shape("reflectance", "face_color"))),
+      {});
+  g_buffers = &s.buffers;
+  const TexturedValue w = s.buffers.materials[s.buffers.shapes[0].material].param[0];
+  const TexturedValue color = s.buffers.materials[s.buffers.shapes[1].material].param[0];
+  expect_vec(eval_textured(w, tex_coord_mesh(vec2(0.0f), 0u, 0u, vec2(0.25f, 0.5f))),
+             vec3(0.5f * (0.25f * 1 + 0.25f * 2 + 0.5f * 4)));
+  expect_vec(eval_textured(color, tex_coord_mesh(vec2(0.0f), 1u, 0u, vec2(0.25f, 0.5f))),
+             0.5f * vec3(0.1f, 0.2f, 0.3f));
 }
 
 TEST(Texture, ImagesLoadTopRowFirstAndSrgbDecoded) {

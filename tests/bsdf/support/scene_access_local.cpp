@@ -55,5 +55,6 @@ vec3 scene_position(uint) { out_of_scope("scene_position"); }
 vec3 scene_normal(uint) { out_of_scope("scene_normal"); }
 vec2 scene_uv(uint) { out_of_scope("scene_uv"); }
 uint scene_index(uint) { out_of_scope("scene_index"); }
+uint scene_attribute(uint) { out_of_scope("scene_attribute"); }
 
 }  // namespace tr
