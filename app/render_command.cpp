@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -22,6 +23,7 @@
 #include "render/checkpoint.h"
 #include "render/write_result.h"
 #include "scenes/load_scene.h"
+#include "scenes/sampler.h"
 #include "scenes/scene_digest.h"
 
 namespace tr {
@@ -35,7 +37,8 @@ const char* kUsage =
     "  OUT_var.exr (per-sample variance) and OUT.png (sRGB preview); OUT defaults to the\n"
     "  scene's file name in the current directory.\n"
     "  -D NAME=VALUE   override a <default> of the scene      -a PATH  add a search path\n"
-    "  --spp N         samples per pixel (default: the scene's sampler sample_count)\n"
+    "  --spp N         samples per pixel (default: the scene's sampler sample_count), rounded\n"
+    "                  as the scene's sampler rounds sample_count\n"
     "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
@@ -126,7 +129,8 @@ void check_output_directory(const std::string& path) {
   TempFile probe(path);  // what access() cannot tell (e.g. for root): whether files can be made
 }
 
-void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOutcome& outcome) {
+void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOutcome& outcome,
+                   const std::string& sample_count_note) {
   const RenderStats& s = r.stats;
   double sps = s.seconds > 0 ? double(s.samples) / s.seconds : 0.0;
   double rps = s.seconds > 0 ? double(s.rays) / s.seconds : 0.0;
@@ -135,6 +139,7 @@ void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOu
       "rejected\n",
       r.width, r.height, r.spp, s.seconds, sps * 1e-6, rps * 1e-6,
       static_cast<unsigned long long>(s.rejected_nonfinite));
+  if (!sample_count_note.empty()) std::printf("twinray: %s\n", sample_count_note.c_str());
   std::printf("twinray: stopped: %s; estimated relative error %.4g\n",
               stop_reason_name(outcome.stop), outcome.error);
   std::printf("twinray: backend %s (%s); wrote %s, %s, %s\n", r.backend.c_str(), r.device.c_str(),
@@ -161,6 +166,10 @@ int render_command(int argc, char** argv) {
     OutputPaths paths = output_paths(a.output);
     check_output_directory(paths.image);
     Scene scene = load_scene(a.scene, a.load);
+    if (a.render.spp) {
+      set_sample_count(scene, a.render.spp);
+      a.render.spp = scene.spp;
+    }
     a.render.seed = a.seed.value_or(scene.seed);
     const Camera& camera = scene.buffers.globals.camera;
     a.budget.spp = a.render.spp ? a.render.spp : scene.spp;
@@ -185,14 +194,17 @@ int render_command(int argc, char** argv) {
         [&signals] { return signals.raised(); });
     bar.finish();
     RenderResult result = film_result(film, *renderer);
-    write_result(result, paths,
-                 {{"twinray:scene", a.scene},
-                  {"twinray:integrator", scene.integrator_name},
-                  {"twinray:version", TWINRAY_VERSION},
-                  {"twinray:stopped", stop_reason_name(outcome.stop)},
-                  {"twinray:estimated_error", std::to_string(outcome.error)}},
-                 scene.film_half, scene.aov_channels);
-    print_summary(result, paths, outcome);
+    std::map<std::string, std::string> metadata = {
+        {"twinray:scene", a.scene},
+        {"twinray:integrator", scene.integrator_name},
+        {"twinray:sampler", sampler_name(scene.buffers.globals.sampler_params.type)},
+        {"twinray:version", TWINRAY_VERSION},
+        {"twinray:stopped", stop_reason_name(outcome.stop)},
+        {"twinray:estimated_error", std::to_string(outcome.error)}};
+    if (!scene.sample_count_note.empty())
+      metadata["twinray:sample_count_rounding"] = scene.sample_count_note;
+    write_result(result, paths, metadata, scene.film_half, scene.aov_channels);
+    print_summary(result, paths, outcome, scene.sample_count_note);
     return outcome.stop == StopReason::Interrupted ? kExitInterrupted : kExitOk;
   } catch (...) {
     return report_failure("twinray");

@@ -44,7 +44,7 @@ INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
   SceneGlobals g = scene_globals();
   Camera c = g.camera;
   PathState s;
-  s.rng = rng_init(pixel.y * c.width + pixel.x, sample_index, seed);
+  s.rng = rng_init_sampler(pixel.y * c.width + pixel.x, sample_index, seed, g.sampler_params);
   vec2 film = sample_film_position(c, pixel, rng_next_2d(s.rng), s.film_sign);
   s.ray = camera_ray(c, film, rng_next_2d(s.rng));
   s.throughput = vec3(1.0f);

@@ -68,6 +68,9 @@ TR_NAMESPACE_END
 #ifndef TR_HAS_AOV
 #define TR_HAS_AOV(type) true
 #endif
+#ifndef TR_HAS_SAMPLER
+#define TR_HAS_SAMPLER(type) true
+#endif
 
 TR_NAMESPACE_BEGIN
 

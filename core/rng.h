@@ -6,10 +6,19 @@
 // it passes TestU01 BigCrush as a 4D->4D hash. The dimension counter advances by one per
 // hash, which yields four 32-bit values; rng_next_1d uses the first, rng_next_2d the first
 // two, so consecutive calls never reuse a counter.
+//
+// The scene's sampler (Rng.sampler_params) decides what a draw is. `independent`: the hash's bits.
+// The stratified samplers (core/samplers/) split a pixel's samples into passes of
+// sample_count; a draw's point set is fixed per (pixel, pass, dimension, seed) by a second
+// hash of (pixel, ~pass, dimension, seed) (~pass keeps it apart from the per-sample hashes of
+// the first 2^31 samples), and the per-sample hash supplies the jitter. A 2D draw is one 2D
+// point of the sampler, so 1D and 2D draws consume the dimension counter as `independent`.
 #ifndef TWINRAY_CORE_RNG_H
 #define TWINRAY_CORE_RNG_H
 
-#include "core/prelude.h"
+#include "core/samplers/ldsampler.h"
+#include "core/samplers/multijitter.h"
+#include "core/samplers/stratified.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -18,6 +27,7 @@ struct Rng {
   uint sample_index;  // sample index within the pixel
   uint seed;
   uint dimension;  // next counter value
+  Sampler sampler_params;
 };
 
 INLINE uvec4 pcg4d(uvec4 v) {
@@ -40,6 +50,18 @@ INLINE Rng rng_init(uint pixel, uint sample_index, uint seed) {
   r.sample_index = sample_index;
   r.seed = seed;
   r.dimension = 0u;
+  r.sampler_params.type = SAMPLER_INDEPENDENT;
+  r.sampler_params.sample_count = 1u;
+  r.sampler_params.resolution = uvec2(1u);
+  r.sampler_params.jitter = 1u;
+  r.sampler_params.inv_sample_count = 1.0f;
+  r.sampler_params.inv_resolution = vec2(1.0f);
+  return r;
+}
+
+INLINE Rng rng_init_sampler(uint pixel, uint sample_index, uint seed, Sampler params) {
+  Rng r = rng_init(pixel, sample_index, seed);
+  r.sampler_params = params;
   return r;
 }
 
@@ -52,9 +74,54 @@ INLINE uvec4 rng_next_bits(INOUT(Rng) r) {
   return h;
 }
 
-INLINE float rng_next_1d(INOUT(Rng) r) { return rng_to_unit_float(rng_next_bits(r).x); }
+// The hash that fixes the point set of the current pass at the current dimension.
+INLINE uvec4 rng_pass_bits(Rng r) {
+  uint pass = r.sample_index / r.sampler_params.sample_count;
+  return pcg4d(uvec4(r.pixel, ~pass, r.dimension, r.seed));
+}
+
+INLINE uint rng_index_in_pass(Rng r) { return r.sample_index % r.sampler_params.sample_count; }
+
+INLINE float rng_next_1d(INOUT(Rng) r) {
+  uint type = r.sampler_params.type;
+  if ((TR_HAS_SAMPLER(SAMPLER_STRATIFIED) && type == SAMPLER_STRATIFIED) ||
+      (TR_HAS_SAMPLER(SAMPLER_MULTIJITTER) && type == SAMPLER_MULTIJITTER)) {
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    float j = rng_to_unit_float(rng_next_bits(r).x);
+    return stratified_1d(r.sampler_params, index, pass_bits.x, j);
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_LDSAMPLER) && type == SAMPLER_LDSAMPLER) {
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    r.dimension += 1u;
+    return ldsampler_1d(r.sampler_params, index, pass_bits.x, pass_bits.y);
+  }
+  return rng_to_unit_float(rng_next_bits(r).x);
+}
 
 INLINE vec2 rng_next_2d(INOUT(Rng) r) {
+  uint type = r.sampler_params.type;
+  if (TR_HAS_SAMPLER(SAMPLER_STRATIFIED) && type == SAMPLER_STRATIFIED) {
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    uvec4 h = rng_next_bits(r);
+    vec2 j = vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));
+    return stratified_2d(r.sampler_params, index, pass_bits.x, j);
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_MULTIJITTER) && type == SAMPLER_MULTIJITTER) {
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    uvec4 h = rng_next_bits(r);
+    vec2 j = vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));
+    return multijitter_2d(r.sampler_params, index, uvec3(pass_bits.x, pass_bits.y, pass_bits.z), j);
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_LDSAMPLER) && type == SAMPLER_LDSAMPLER) {
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    r.dimension += 1u;
+    return ldsampler_2d(r.sampler_params, index, pass_bits.x, uvec2(pass_bits.y, pass_bits.z));
+  }
   uvec4 h = rng_next_bits(r);
   return vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));
 }

@@ -226,6 +226,23 @@ struct Integrator {
   uvec4 aov_types[4];  // AOV_* of output variable i at [i / 4][i % 4]
 };
 
+// ---- Samplers (core/rng.h draws their points) --------------------------------------------
+const uint SAMPLER_INDEPENDENT = 0u;
+const uint SAMPLER_STRATIFIED = 1u;   // core/samplers/stratified.h
+const uint SAMPLER_LDSAMPLER = 2u;    // core/samplers/ldsampler.h
+const uint SAMPLER_MULTIJITTER = 3u;  // core/samplers/multijitter.h
+
+// The scene's sampler. A pixel's samples come in passes of sample_count: within a pass each
+// dimension's points are stratified (Mitsuba semantics, after its sample_count rounding).
+struct Sampler {
+  uint type;          // SAMPLER_*
+  uint sample_count;  // points of one pass (rounded as Mitsuba rounds it)
+  uvec2 resolution;   // stratified: sqrt(sample_count) twice; multijitter: its grid
+  uint jitter;        // stratified, multijitter: 1 to jitter within strata, 0 for centers
+  float inv_sample_count;
+  vec2 inv_resolution;
+};
+
 struct SceneGlobals {
   Camera camera;
   Integrator integrator;
@@ -233,6 +250,7 @@ struct SceneGlobals {
   uint emitter_alias_offset;  // emitter selection table, pmf proportional to sampling_weight
   uint environment;           // the constant/envmap emitter, or NO_INDEX
   uint instance_count;
+  Sampler sampler_params;
 };
 
 TR_NAMESPACE_END

@@ -1,5 +1,5 @@
 // The scene's feature masks, passed to every shader stage as the specialization constants
-// of shaders/features.glsl (constant_id 0..6, in this struct's order).
+// of shaders/features.glsl (constant_id 0..7, in this struct's order).
 #pragma once
 
 #include <cstdint>
@@ -16,6 +16,7 @@ struct SceneFeatures {
   uint32_t material_flags = 0;    // union of Material.flags
   uint32_t integrator_types = 0;  // bit INTEGRATOR_*
   uint32_t aov_types = 0;         // bit AOV_* (0: the scene writes no AOVs)
+  uint32_t sampler_types = 0;     // bit SAMPLER_*
 };
 
 SceneFeatures scene_features(const SceneBuffers& scene);

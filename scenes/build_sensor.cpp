@@ -1,6 +1,7 @@
 // Sensor (perspective, thinlens, orthographic), film (hdrfilm), reconstruction filter (box,
-// gaussian, tent, mitchell, catmullrom, lanczos), sampler (independent) and integrator (path,
-// direct, moment) -> Camera, Integrator and the Scene's spp/seed. Defaults as Mitsuba 3
+// gaussian, tent, mitchell, catmullrom, lanczos), sampler (independent, stratified, ldsampler,
+// multijitter; scenes/sampler.h) and integrator (path, direct, moment) -> Camera, Integrator,
+// the sampler and the Scene's spp/seed. Defaults as Mitsuba 3
 // (src/sensors, src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters,
 // src/samplers, src/integrators).
 #include <unistd.h>
@@ -10,6 +11,7 @@
 #include <set>
 
 #include "core/rfilter.h"
+#include "scenes/sampler.h"
 #include "scenes/scene_builder.h"
 #include "scenes/values.h"
 
@@ -224,14 +226,23 @@ void SceneBuilder::add_sensor(Node& s) {
   if (samplers.size() > 1) fail(samplers[1]->loc, describe(s), " has more than one sampler");
   Node default_sampler = empty_node("sampler", "independent", s.loc);
   Node& sampler = samplers.empty() ? default_sampler : *samplers[0]->object;
-  if (sampler.type != "independent")
-    fail(sampler.loc, "unknown sampler type \"", sampler.type, "\" (supported: independent)");
+  uint sampler_type;
+  if (!sampler_type_of(sampler.type, sampler_type))
+    fail(sampler.loc, "unknown sampler type \"", sampler.type,
+         "\" (supported: independent, stratified, ldsampler, multijitter)");
   long long spp = take_integer(sampler, "sample_count", 4), seed = take_integer(sampler, "seed", 0);
   if (spp <= 0 || spp > 0xffffffffLL)
     fail(sampler.loc, describe(sampler), ": sample_count must be positive");
   if (seed < 0 || seed > 0xffffffffLL)
     fail(sampler.loc, describe(sampler), ": seed must be in [0, 2^32)");
-  scene_.spp = uint(spp);
+  bool jitter = true;
+  if (sampler_type == SAMPLER_STRATIFIED || sampler_type == SAMPLER_MULTIJITTER)
+    jitter = take_bool(sampler, "jitter", true);
+  try {
+    set_sampler(scene_, sampler_type, uint(spp), jitter);
+  } catch (const SceneError& e) {
+    fail(location_of(sampler, "sample_count"), describe(sampler), ": ", e.what());
+  }
   scene_.seed = uint(seed);
   check_consumed(sampler);
 

@@ -101,10 +101,10 @@ const Entry TABLE[] = {
     {"rfilter", "catmullrom", PluginSupport::Supported, ""},
     {"rfilter", "lanczos", PluginSupport::Supported, ""},
     {"sampler", "independent", PluginSupport::Supported, ""},
-    {"sampler", "stratified", PluginSupport::Planned, SAMPLERS_ISSUE},
-    {"sampler", "multijitter", PluginSupport::Planned, SAMPLERS_ISSUE},
+    {"sampler", "stratified", PluginSupport::Supported, ""},
+    {"sampler", "multijitter", PluginSupport::Supported, ""},
     {"sampler", "orthogonal", PluginSupport::Planned, SAMPLERS_ISSUE},
-    {"sampler", "ldsampler", PluginSupport::Planned, SAMPLERS_ISSUE},
+    {"sampler", "ldsampler", PluginSupport::Supported, ""},
     // integrators
     {"integrator", "path", PluginSupport::Supported, ""},
     {"integrator", "direct", PluginSupport::Supported, ""},

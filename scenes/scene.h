@@ -37,12 +37,13 @@ struct SceneBuffers {
 struct Scene {
   SceneBuffers buffers;
   std::string path;             // the XML file it was loaded from
-  uint spp = 1;                 // sampler `sample_count`
+  uint spp = 1;                 // sampler `sample_count`, rounded as Mitsuba (scenes/sampler.h)
   uint seed = 0;                // sampler `seed`
   bool film_half = true;        // hdrfilm `component_format` float16 (Mitsuba's default)
   std::string integrator_name;  // e.g. "path", "moment(path)"
   // Mitsuba `aov`: per output variable (Integrator.aov_types order), its EXR channel names.
   std::vector<std::vector<std::string>> aov_channels;
+  std::string sample_count_note;  // how sample_count was rounded, empty when it was not
 };
 
 // Bad input: `what()` is one line, "file:line: what and why".

@@ -14,6 +14,7 @@ layout(constant_id = 3) const uint SPEC_TEXTURE_TYPES = 0xffffffffu;
 layout(constant_id = 4) const uint SPEC_MATERIAL_FLAGS = 0xffffffffu;
 layout(constant_id = 5) const uint SPEC_INTEGRATOR_TYPES = 0xffffffffu;
 layout(constant_id = 6) const uint SPEC_AOV_TYPES = 0xffffffffu;
+layout(constant_id = 7) const uint SPEC_SAMPLER_TYPES = 0xffffffffu;
 
 #define TR_HAS_BSDF(type) ((SPEC_BSDF_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_EMITTER(type) ((SPEC_EMITTER_TYPES & (1u << (type))) != 0u)
@@ -23,5 +24,6 @@ layout(constant_id = 6) const uint SPEC_AOV_TYPES = 0xffffffffu;
 #define TR_HAS_INTEGRATOR(type) ((SPEC_INTEGRATOR_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_AOV(type) ((SPEC_AOV_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_AOVS (SPEC_AOV_TYPES != 0u)
+#define TR_HAS_SAMPLER(type) ((SPEC_SAMPLER_TYPES & (1u << (type))) != 0u)
 
 #endif

@@ -1,0 +1,85 @@
+#include "scenes/sampler.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace tr {
+
+namespace {
+
+const std::uint64_t MAX_PASS = 1u << 24;  // pass indices stay exact in float (core/samplers/)
+
+}  // namespace
+
+bool sampler_type_of(const std::string& name, uint& type) {
+  for (uint t : {SAMPLER_INDEPENDENT, SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER})
+    if (name == sampler_name(t)) {
+      type = t;
+      return true;
+    }
+  return false;
+}
+
+const char* sampler_name(uint type) {
+  switch (type) {
+    case SAMPLER_STRATIFIED:
+      return "stratified";
+    case SAMPLER_LDSAMPLER:
+      return "ldsampler";
+    case SAMPLER_MULTIJITTER:
+      return "multijitter";
+    default:
+      return "independent";
+  }
+}
+
+uint rounded_sample_count(uint type, uint requested) {
+  std::uint64_t n = requested;
+  if (type == SAMPLER_STRATIFIED) {
+    std::uint64_t r = 1;
+    while (r * r < n) ++r;
+    n = r * r;
+  } else if (type == SAMPLER_LDSAMPLER) {
+    std::uint64_t r = 2;
+    while (r * r < n) r *= 2;
+    n = r * r;
+  } else if (type == SAMPLER_MULTIJITTER) {
+    std::uint64_t rows = std::uint64_t(std::sqrt(float(requested)));  // as Mitsuba, in float
+    n = (n + rows - 1) / rows * rows;
+  }
+  if (type != SAMPLER_INDEPENDENT && n > MAX_PASS)
+    throw SceneError(std::string(sampler_name(type)) + ": sample_count " +
+                     std::to_string(requested) + " exceeds 2^24");
+  return uint(n);
+}
+
+void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
+  uint n = rounded_sample_count(type, requested);
+  Sampler& s = scene.buffers.globals.sampler_params;
+  s.type = type;
+  s.sample_count = n;
+  s.jitter = jitter ? 1u : 0u;
+  s.resolution = uvec2(1u);
+  if (type == SAMPLER_STRATIFIED) {
+    uint r = uint(std::lround(std::sqrt(double(n))));
+    s.resolution = uvec2(r);
+  } else if (type == SAMPLER_MULTIJITTER) {
+    uint rows = uint(std::sqrt(float(requested)));
+    s.resolution = uvec2(n / rows, rows);
+  }
+  s.inv_sample_count = 1.0f / float(n);
+  s.inv_resolution = vec2(1.0f) / vec2(s.resolution);
+  scene.spp = n;
+  scene.sample_count_note.clear();
+  if (n != requested)
+    scene.sample_count_note = std::string(sampler_name(type)) + ": sample_count " +
+                              std::to_string(requested) + " rounded up to " + std::to_string(n) +
+                              ", as Mitsuba";
+}
+
+void set_sample_count(Scene& scene, uint requested) {
+  const Sampler& s = scene.buffers.globals.sampler_params;
+  set_sampler(scene, s.type, requested, s.jitter != 0u);
+}
+
+}  // namespace tr

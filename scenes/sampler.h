@@ -1,0 +1,28 @@
+// The scene's sampler on the host: Mitsuba 3.8's sample_count rounding (set_sample_count in
+// src/samplers/*.cpp) and the device record of core/scene_types.h.
+#pragma once
+
+#include <string>
+
+#include "scenes/scene.h"
+
+namespace tr {
+
+// SAMPLER_* of a Mitsuba sampler type name; false when twinray has no such sampler.
+bool sampler_type_of(const std::string& name, uint& type);
+const char* sampler_name(uint type);
+
+// The sample count Mitsuba renders when asked for `requested`: stratified the next square,
+// ldsampler the next power of 4 (at least 4), multijitter floor(sqrt(n)) rows of
+// ceil(n / rows) columns; independent keeps it. Throws SceneError past 2^24 points a pass.
+uint rounded_sample_count(uint type, uint requested);
+
+// Sets the scene's sampler to `type` at `requested` samples per pixel, rounded as Mitsuba
+// rounds it: globals.sampler, Scene.spp and Scene.sample_count_note ("stratified:
+// sample_count 10 rounded up to 16, as Mitsuba", empty when not rounded).
+void set_sampler(Scene& scene, uint type, uint requested, bool jitter);
+
+// --spp N: the same rounding for the scene's sampler.
+void set_sample_count(Scene& scene, uint requested);
+
+}  // namespace tr

@@ -1,0 +1,254 @@
+// The stratified samplers (core/samplers/, drawn through core/rng.h): Mitsuba's sample_count
+// rounding, each sampler's stratification property within a pass, chi-square uniformity of
+// the marginal 1D and 2D distributions, and faster convergence than `independent`.
+#include "scenes/sampler.h"
+
+#include <gtest/gtest.h>
+#include <twinray_validation.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/rng.h"
+
+namespace tr {
+namespace {
+
+Sampler make(uint type, uint requested, bool jitter = true) {
+  Scene scene;
+  set_sampler(scene, type, requested, jitter);
+  return scene.buffers.globals.sampler_params;
+}
+
+float draw_1d(const Sampler& s, uint pixel, uint index, uint seed, uint dimension) {
+  Rng r = rng_init_sampler(pixel, index, seed, s);
+  r.dimension = dimension;
+  return rng_next_1d(r);
+}
+
+vec2 draw_2d(const Sampler& s, uint pixel, uint index, uint seed, uint dimension) {
+  Rng r = rng_init_sampler(pixel, index, seed, s);
+  r.dimension = dimension;
+  return rng_next_2d(r);
+}
+
+const uint kStratifiedTypes[] = {SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER};
+
+TEST(Permute, IsABijectionForAnyLength) {
+  for (uint n : {1u, 2u, 3u, 5u, 16u, 17u, 100u, 256u, 1000u, 4097u})
+    for (uint p : {0u, 1u, 0x9e3779b9u, 0xdeadbeefu, 12345u}) {
+      std::set<uint> image;
+      for (uint i = 0; i < n; ++i) {
+        uint k = permute_kensler(i, n, p);
+        ASSERT_LT(k, n);
+        image.insert(k);
+      }
+      EXPECT_EQ(image.size(), n) << "n " << n << " p " << p;
+    }
+}
+
+// src/samplers/*.cpp set_sample_count in Mitsuba 3.8.
+TEST(SampleCount, RoundsAsMitsuba) {
+  auto n = rounded_sample_count;
+  EXPECT_EQ(n(SAMPLER_INDEPENDENT, 10), 10u);
+  EXPECT_EQ(n(SAMPLER_STRATIFIED, 1), 1u);
+  EXPECT_EQ(n(SAMPLER_STRATIFIED, 2), 4u);
+  EXPECT_EQ(n(SAMPLER_STRATIFIED, 10), 16u);
+  EXPECT_EQ(n(SAMPLER_STRATIFIED, 16), 16u);
+  EXPECT_EQ(n(SAMPLER_STRATIFIED, 17), 25u);
+  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 1), 4u);  // the grid starts at 2 x 2
+  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 5), 16u);
+  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 16), 16u);
+  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 17), 64u);
+  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 25), 64u);
+  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 1000), 1024u);
+  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 1), 1u);
+  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 2), 2u);    // 1 row of 2
+  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 5), 6u);    // 2 rows of 3
+  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 10), 12u);  // 3 rows of 4
+  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 16), 16u);
+  EXPECT_THROW(n(SAMPLER_STRATIFIED, (1u << 24) + 1u), SceneError);
+}
+
+TEST(SampleCount, SaysWhenItRounds) {
+  Scene scene;
+  set_sampler(scene, SAMPLER_STRATIFIED, 10, true);
+  EXPECT_EQ(scene.spp, 16u);
+  EXPECT_EQ(scene.sample_count_note, "stratified: sample_count 10 rounded up to 16, as Mitsuba");
+  set_sample_count(scene, 25);
+  EXPECT_EQ(scene.spp, 25u);
+  EXPECT_EQ(scene.sample_count_note, "");
+  set_sampler(scene, SAMPLER_MULTIJITTER, 10, false);
+  EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(4u, 3u));
+  EXPECT_EQ(scene.buffers.globals.sampler_params.jitter, 0u);
+}
+
+TEST(Independent, DrawsTheHashAsBefore) {
+  Sampler s = make(SAMPLER_INDEPENDENT, 16);
+  for (uint i = 0; i < 100; ++i) {
+    Rng a = rng_init(i * 7u, i, 3u), b = rng_init_sampler(i * 7u, i, 3u, s);
+    uvec4 h = pcg4d(uvec4(i * 7u, i, 0u, 3u));
+    EXPECT_EQ(rng_next_1d(b), rng_to_unit_float(h.x));
+    EXPECT_EQ(rng_next_1d(a), rng_to_unit_float(h.x));
+    EXPECT_EQ(rng_next_2d(a), rng_next_2d(b));
+    EXPECT_EQ(b.dimension, 2u);
+  }
+}
+
+// Within each pass (samples k n .. k n + n - 1 of a pixel), for each dimension: the property
+// each sampler guarantees.
+void expect_stratified(uint type, uint requested, bool jitter) {
+  Sampler s = make(type, requested, jitter);
+  const uint n = s.sample_count;
+  const uvec2 res = s.resolution;
+  for (uint pixel : {0u, 1u, 4711u})
+    for (uint pass : {0u, 1u, 5u})
+      for (uint dim : {0u, 1u, 7u}) {
+        SCOPED_TRACE("type " + std::to_string(type) + " n " + std::to_string(n) + " pixel " +
+                     std::to_string(pixel) + " pass " + std::to_string(pass) + " dim " +
+                     std::to_string(dim) + (jitter ? "" : " no jitter"));
+        std::set<uint> strata_1d, cells, columns, rows;
+        std::vector<vec2> points;
+        for (uint i = 0; i < n; ++i) {
+          float x = draw_1d(s, pixel, pass * n + i, 9u, dim);
+          ASSERT_TRUE(x >= 0.0f && x < 1.0f);
+          strata_1d.insert(uint(x * float(n)));
+          vec2 p = draw_2d(s, pixel, pass * n + i, 9u, dim);
+          ASSERT_TRUE(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f);
+          points.push_back(p);
+          columns.insert(uint(p.x * float(n)));
+          rows.insert(uint(p.y * float(n)));
+          if (type != SAMPLER_LDSAMPLER)
+            cells.insert(uint(p.y * float(res.y)) * res.x + uint(p.x * float(res.x)));
+        }
+        EXPECT_EQ(strata_1d.size(), n) << "1D: one point per stratum of 1/n";
+        if (type == SAMPLER_STRATIFIED) {
+          EXPECT_EQ(cells.size(), n) << "one point per grid cell";
+        }
+        if (type == SAMPLER_MULTIJITTER) {
+          EXPECT_EQ(cells.size(), n) << "one point per grid cell";
+          EXPECT_EQ(columns.size(), n) << "n-rooks: one point per column 1/n wide";
+          EXPECT_EQ(rows.size(), n) << "n-rooks: one point per row 1/n high";
+        }
+        if (type == SAMPLER_LDSAMPLER) {
+          // (0, m, 2)-net in base 2, n = 2^m: every elementary interval 2^-a x 2^-(m - a).
+          uint m = 0;
+          while ((1u << m) < n) ++m;
+          for (uint a = 0; a <= m; ++a) {
+            std::set<uint> intervals;
+            for (vec2 p : points)
+              intervals.insert((uint(p.x * float(1u << a)) << (m - a)) |
+                               uint(p.y * float(1u << (m - a))));
+            EXPECT_EQ(intervals.size(), n) << "elementary intervals 2^-" << a << " x 2^-" << m - a;
+          }
+        }
+      }
+}
+
+TEST(Stratification, Stratified) {
+  for (uint requested : {1u, 4u, 10u, 16u, 64u, 256u}) {
+    expect_stratified(SAMPLER_STRATIFIED, requested, true);
+    expect_stratified(SAMPLER_STRATIFIED, requested, false);
+  }
+}
+
+TEST(Stratification, Ldsampler) {
+  for (uint requested : {4u, 16u, 64u, 256u, 1024u})
+    expect_stratified(SAMPLER_LDSAMPLER, requested, true);
+}
+
+TEST(Stratification, Multijitter) {
+  for (uint requested : {1u, 2u, 5u, 10u, 16u, 64u, 100u, 250u}) {
+    expect_stratified(SAMPLER_MULTIJITTER, requested, true);
+    expect_stratified(SAMPLER_MULTIJITTER, requested, false);
+  }
+}
+
+// Chi-square goodness of fit of one sample's marginal distribution: sample `index` of many
+// pixels (independent randomizations of the pass) must be uniform in 1D, in 2D, and jointly
+// uniform across two consecutive 1D dimensions (the dimensions' permutations are
+// independent). Significance 1% over all cases, Sidak-corrected per case.
+struct UniformityCase {
+  uint type;
+  uint requested;
+  uint index;
+  uint dimension;
+};
+
+TEST(Uniformity, ChiSquare) {
+  std::vector<UniformityCase> cases;
+  for (uint type : kStratifiedTypes)
+    for (uint requested : {16u, 64u})
+      for (uint index : {0u, 5u, 70u})
+        for (uint dimension : {0u, 3u}) cases.push_back({type, requested, index, dimension});
+  const int kProjections = 3;
+  const double alpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / double(cases.size() * kProjections));
+  const uint kPixels = 200000, kBins1d = 100, kBins2d = 20;
+  for (const UniformityCase& c : cases) {
+    Sampler s = make(c.type, c.requested);
+    std::vector<double> h1(kBins1d, 0.0), h2(kBins2d * kBins2d, 0.0), hpair(kBins2d * kBins2d, 0.0);
+    for (uint pixel = 0; pixel < kPixels; ++pixel) {
+      float x = draw_1d(s, pixel, c.index, 17u, c.dimension);
+      h1[uint(x * kBins1d)] += 1.0;
+      vec2 p = draw_2d(s, pixel, c.index, 17u, c.dimension);
+      h2[uint(p.y * kBins2d) * kBins2d + uint(p.x * kBins2d)] += 1.0;
+      Rng r = rng_init_sampler(pixel, c.index, 17u, s);
+      r.dimension = c.dimension;
+      float u = rng_next_1d(r), v = rng_next_1d(r);
+      hpair[uint(v * kBins2d) * kBins2d + uint(u * kBins2d)] += 1.0;
+    }
+    auto p_value = [&](const std::vector<double>& h) {
+      double expected = double(kPixels) / double(h.size()), statistic = 0.0;
+      for (double o : h) statistic += (o - expected) * (o - expected) / expected;
+      return twinray::validation::chi_square_p_value(statistic, int(h.size()) - 1);
+    };
+    std::string what = "type " + std::to_string(c.type) + " n " + std::to_string(c.requested) +
+                       " index " + std::to_string(c.index) + " dim " + std::to_string(c.dimension);
+    EXPECT_GT(p_value(h1), alpha) << what << ": 1D";
+    EXPECT_GT(p_value(h2), alpha) << what << ": 2D";
+    EXPECT_GT(p_value(hpair), alpha) << what << ": two consecutive 1D draws";
+  }
+}
+
+// RMSE of the mean of a smooth integrand over 256 samples, over 200 pixels (independent
+// randomizations): a stratified sampler's error falls faster than 1/sqrt(N), so at N = 256
+// it must be far below `independent`'s (expected ratios are ~0.1; asserted: below 0.5).
+double rmse(const Sampler& s, bool two_d) {
+  const uint n = 256, kPixels = 200;
+  // Integrands and their exact integrals over [0,1) and [0,1)^2.
+  const double exact_1d = 1.0 - std::cos(1.0), exact_2d = (std::exp(1.0) - 1.0) * 0.5;
+  double sum_sq = 0.0;
+  for (uint pixel = 0; pixel < kPixels; ++pixel) {
+    double mean = 0.0;
+    for (uint i = 0; i < n; ++i) {
+      if (two_d) {
+        vec2 p = draw_2d(s, pixel, i, 3u, 2u);
+        mean += std::exp(double(p.x)) * double(p.y);
+      } else {
+        mean += std::sin(double(draw_1d(s, pixel, i, 3u, 2u)));
+      }
+    }
+    mean /= n;
+    double e = mean - (two_d ? exact_2d : exact_1d);
+    sum_sq += e * e;
+  }
+  return std::sqrt(sum_sq / kPixels);
+}
+
+TEST(Convergence, FasterThanIndependent) {
+  for (bool two_d : {false, true}) {
+    double independent = rmse(make(SAMPLER_INDEPENDENT, 256), two_d);
+    for (uint type : kStratifiedTypes) {
+      double r = rmse(make(type, 256), two_d);
+      EXPECT_LT(r, 0.5 * independent)
+          << "type " << type << (two_d ? " 2D" : " 1D") << " RMSE " << r << " vs " << independent;
+      std::printf("type %u %s: RMSE %.3g, independent %.3g\n", type, two_d ? "2D" : "1D", r,
+                  independent);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tr
