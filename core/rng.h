@@ -18,6 +18,7 @@
 
 #include "core/samplers/ldsampler.h"
 #include "core/samplers/multijitter.h"
+#include "core/samplers/orthogonal.h"
 #include "core/samplers/stratified.h"
 
 TR_NAMESPACE_BEGIN
@@ -80,6 +81,13 @@ INLINE uvec4 rng_pass_bits(Rng r) {
   return pcg4d(uvec4(r.pixel, ~pass, r.dimension, r.seed));
 }
 
+// orthogonal: the row order of the pass, shared by every dimension (the hash of dimension
+// 2^32 - 1, which the counter never reaches).
+INLINE uint rng_row_permutation(Rng r) {
+  uint pass = r.sample_index / r.sampler_params.sample_count;
+  return pcg4d(uvec4(r.pixel, ~pass, 0xffffffffu, r.seed)).x;
+}
+
 INLINE uint rng_index_in_pass(Rng r) { return r.sample_index % r.sampler_params.sample_count; }
 
 INLINE float rng_next_1d(INOUT(Rng) r) {
@@ -90,6 +98,13 @@ INLINE float rng_next_1d(INOUT(Rng) r) {
     uint index = rng_index_in_pass(r);
     float j = rng_to_unit_float(rng_next_bits(r).x);
     return stratified_1d(r.sampler_params, index, pass_bits.x, j);
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_ORTHOGONAL) && type == SAMPLER_ORTHOGONAL) {
+    uint dimension = r.dimension;
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    float j = rng_to_unit_float(rng_next_bits(r).x);
+    return orthogonal_1d(r.sampler_params, index, dimension, rng_row_permutation(r), pass_bits, j);
   }
   if (TR_HAS_SAMPLER(SAMPLER_LDSAMPLER) && type == SAMPLER_LDSAMPLER) {
     uvec4 pass_bits = rng_pass_bits(r);
@@ -115,6 +130,14 @@ INLINE vec2 rng_next_2d(INOUT(Rng) r) {
     uvec4 h = rng_next_bits(r);
     vec2 j = vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));
     return multijitter_2d(r.sampler_params, index, uvec3(pass_bits.x, pass_bits.y, pass_bits.z), j);
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_ORTHOGONAL) && type == SAMPLER_ORTHOGONAL) {
+    uint dimension = r.dimension;
+    uvec4 pass_bits = rng_pass_bits(r);
+    uint index = rng_index_in_pass(r);
+    uvec4 h = rng_next_bits(r);
+    vec2 j = vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));
+    return orthogonal_2d(r.sampler_params, index, dimension, rng_row_permutation(r), pass_bits, j);
   }
   if (TR_HAS_SAMPLER(SAMPLER_LDSAMPLER) && type == SAMPLER_LDSAMPLER) {
     uvec4 pass_bits = rng_pass_bits(r);

@@ -1,9 +1,9 @@
 // Sensor (perspective, thinlens, orthographic), film (hdrfilm), reconstruction filter (box,
 // gaussian, tent, mitchell, catmullrom, lanczos), sampler (independent, stratified, ldsampler,
-// multijitter; scenes/sampler.h) and integrator (path, direct, moment) -> Camera, Integrator,
-// the sampler and the Scene's spp/seed. Defaults as Mitsuba 3
-// (src/sensors, src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters,
-// src/samplers, src/integrators).
+// multijitter, orthogonal; scenes/sampler.h) and integrator (path, direct, moment) -> Camera,
+// Integrator, the sampler and the Scene's spp/seed. Defaults as Mitsuba 3 (src/sensors,
+// src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters, src/samplers,
+// src/integrators).
 #include <unistd.h>
 
 #include <algorithm>
@@ -229,15 +229,21 @@ void SceneBuilder::add_sensor(Node& s) {
   uint sampler_type;
   if (!sampler_type_of(sampler.type, sampler_type))
     fail(sampler.loc, "unknown sampler type \"", sampler.type,
-         "\" (supported: independent, stratified, ldsampler, multijitter)");
+         "\" (supported: independent, stratified, ldsampler, multijitter, orthogonal)");
   long long spp = take_integer(sampler, "sample_count", 4), seed = take_integer(sampler, "seed", 0);
   if (spp <= 0 || spp > 0xffffffffLL)
     fail(sampler.loc, describe(sampler), ": sample_count must be positive");
   if (seed < 0 || seed > 0xffffffffLL)
     fail(sampler.loc, describe(sampler), ": seed must be in [0, 2^32)");
   bool jitter = true;
-  if (sampler_type == SAMPLER_STRATIFIED || sampler_type == SAMPLER_MULTIJITTER)
+  if (sampler_type == SAMPLER_STRATIFIED || sampler_type == SAMPLER_MULTIJITTER ||
+      sampler_type == SAMPLER_ORTHOGONAL)
     jitter = take_bool(sampler, "jitter", true);
+  // Mitsuba's Bush construction for strength > 2 permutes p^strength rows while its
+  // sample_count stays p^2; only Bose's strength-2 arrays are implemented (its default).
+  if (sampler_type == SAMPLER_ORTHOGONAL && take_integer(sampler, "strength", 2) != 2)
+    fail(find_property(sampler, "strength")->loc, describe(sampler),
+         ": only strength 2 (Bose's orthogonal arrays, Mitsuba's default) is supported");
   try {
     set_sampler(scene_, sampler_type, uint(spp), jitter);
   } catch (const SceneError& e) {

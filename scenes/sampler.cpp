@@ -9,10 +9,19 @@ namespace {
 
 const std::uint64_t MAX_PASS = 1u << 24;  // pass indices stay exact in float (core/samplers/)
 
+std::uint64_t smallest_prime_at_least(std::uint64_t x) {
+  for (;; ++x) {
+    bool prime = true;
+    for (std::uint64_t d = 2; d * d <= x && prime; ++d) prime = x % d != 0;
+    if (prime) return x;
+  }
+}
+
 }  // namespace
 
 bool sampler_type_of(const std::string& name, uint& type) {
-  for (uint t : {SAMPLER_INDEPENDENT, SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER})
+  for (uint t : {SAMPLER_INDEPENDENT, SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER,
+                 SAMPLER_ORTHOGONAL})
     if (name == sampler_name(t)) {
       type = t;
       return true;
@@ -28,6 +37,8 @@ const char* sampler_name(uint type) {
       return "ldsampler";
     case SAMPLER_MULTIJITTER:
       return "multijitter";
+    case SAMPLER_ORTHOGONAL:
+      return "orthogonal";
     default:
       return "independent";
   }
@@ -43,6 +54,10 @@ uint rounded_sample_count(uint type, uint requested) {
     std::uint64_t r = 2;
     while (r * r < n) r *= 2;
     n = r * r;
+  } else if (type == SAMPLER_ORTHOGONAL) {
+    std::uint64_t p = smallest_prime_at_least(2);
+    while (p * p < n) p = smallest_prime_at_least(p + 1);
+    n = p * p;
   } else if (type == SAMPLER_MULTIJITTER) {
     std::uint64_t rows = std::uint64_t(std::sqrt(float(requested)));  // as Mitsuba, in float
     n = (n + rows - 1) / rows * rows;
@@ -60,7 +75,7 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
   s.sample_count = n;
   s.jitter = jitter ? 1u : 0u;
   s.resolution = uvec2(1u);
-  if (type == SAMPLER_STRATIFIED) {
+  if (type == SAMPLER_STRATIFIED || type == SAMPLER_ORTHOGONAL) {
     uint r = uint(std::lround(std::sqrt(double(n))));
     s.resolution = uvec2(r);
   } else if (type == SAMPLER_MULTIJITTER) {

@@ -14,7 +14,8 @@ const char* sampler_name(uint type);
 
 // The sample count Mitsuba renders when asked for `requested`: stratified the next square,
 // ldsampler the next power of 4 (at least 4), multijitter floor(sqrt(n)) rows of
-// ceil(n / rows) columns; independent keeps it. Throws SceneError past 2^24 points a pass.
+// ceil(n / rows) columns, orthogonal the square of the next prime (at least 4); independent
+// keeps it. Throws SceneError past 2^24 points a pass.
 uint rounded_sample_count(uint type, uint requested);
 
 // Sets the scene's sampler to `type` at `requested` samples per pixel, rounded as Mitsuba

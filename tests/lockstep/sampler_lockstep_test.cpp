@@ -1,9 +1,9 @@
 // CPU <-> GPU lockstep of the stratified samplers (issue 11): the Cornell box (48x48) with each
-// sampler at 16 spp, so that every draw of the path goes through core/samplers/ on both sides.
-// Without jitter the points sit at strata centers, symmetric in x and y, so on the Cornell box
-// the camera rays of pixels on the image diagonals hit the diagonal edges of its quads exactly
-// and Embree and the GPU split those ties differently (1.9% of the pixels): that case renders
-// the textured_diffuse scene of the Mitsuba suite instead.
+// sampler at 16 spp (orthogonal: 25), so that every draw of the path goes through core/samplers/ on
+// both sides. Without jitter the points sit at strata centers, symmetric in x and y, so on the
+// Cornell box the camera rays of pixels on the image diagonals hit the diagonal edges of its quads
+// exactly and Embree and the GPU split those ties differently (1.9% of the pixels): that case
+// renders the textured_diffuse scene of the Mitsuba suite instead.
 #include <gtest/gtest.h>
 
 #include "lockstep_check.h"
@@ -35,6 +35,10 @@ TEST(SamplerLockstep, StratifiedWithoutJitter) {
 }
 TEST(SamplerLockstep, Ldsampler) {
   expect_lockstep("ldsampler", cornell_box(SAMPLER_LDSAMPLER), 16, 33);
+}
+TEST(SamplerLockstep, Orthogonal) {  // 16 spp rounds up to 25 (5^2)
+  Scene scene = cornell_box(SAMPLER_ORTHOGONAL);
+  expect_lockstep("orthogonal", scene, scene.spp, 35);
 }
 TEST(SamplerLockstep, Multijitter) {
   expect_lockstep("multijitter", cornell_box(SAMPLER_MULTIJITTER), 16, 34);

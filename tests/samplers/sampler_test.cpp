@@ -34,7 +34,8 @@ vec2 draw_2d(const Sampler& s, uint pixel, uint index, uint seed, uint dimension
   return rng_next_2d(r);
 }
 
-const uint kStratifiedTypes[] = {SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER};
+const uint kStratifiedTypes[] = {SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER,
+                                 SAMPLER_ORTHOGONAL};
 
 TEST(Permute, IsABijectionForAnyLength) {
   for (uint n : {1u, 2u, 3u, 5u, 16u, 17u, 100u, 256u, 1000u, 4097u})
@@ -69,6 +70,12 @@ TEST(SampleCount, RoundsAsMitsuba) {
   EXPECT_EQ(n(SAMPLER_MULTIJITTER, 5), 6u);    // 2 rows of 3
   EXPECT_EQ(n(SAMPLER_MULTIJITTER, 10), 12u);  // 3 rows of 4
   EXPECT_EQ(n(SAMPLER_MULTIJITTER, 16), 16u);
+  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 1), 4u);  // the smallest prime is 2
+  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 5), 9u);
+  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 10), 25u);  // 4 is not prime
+  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 16), 25u);
+  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 50), 121u);  // 8, 9 and 10 are not prime
+  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 289), 289u);
   EXPECT_THROW(n(SAMPLER_STRATIFIED, (1u << 24) + 1u), SceneError);
 }
 
@@ -127,7 +134,7 @@ void expect_stratified(uint type, uint requested, bool jitter) {
         if (type == SAMPLER_STRATIFIED) {
           EXPECT_EQ(cells.size(), n) << "one point per grid cell";
         }
-        if (type == SAMPLER_MULTIJITTER) {
+        if (type == SAMPLER_MULTIJITTER || type == SAMPLER_ORTHOGONAL) {
           EXPECT_EQ(cells.size(), n) << "one point per grid cell";
           EXPECT_EQ(columns.size(), n) << "n-rooks: one point per column 1/n wide";
           EXPECT_EQ(rows.size(), n) << "n-rooks: one point per row 1/n high";
@@ -147,6 +154,25 @@ void expect_stratified(uint type, uint requested, bool jitter) {
       }
 }
 
+// orthogonal: the 1D draws at two dimension counters d < e are OA columns 2d and 2e; while
+// both are at most p, each pair of their strata (of p) holds one sample (strength 2).
+void expect_strength_two(uint requested) {
+  Sampler s = make(SAMPLER_ORTHOGONAL, requested);
+  const uint n = s.sample_count, p = s.resolution.x;
+  for (uint pixel : {0u, 77u})
+    for (uint pass : {0u, 3u})
+      for (uint d = 0; 2 * d <= p; ++d)
+        for (uint e = d + 1; 2 * e <= p; ++e) {
+          std::set<uint> pairs;
+          for (uint i = 0; i < n; ++i) {
+            float x = draw_1d(s, pixel, pass * n + i, 9u, d);
+            float y = draw_1d(s, pixel, pass * n + i, 9u, e);
+            pairs.insert(uint(x * float(p)) * p + uint(y * float(p)));
+          }
+          EXPECT_EQ(pairs.size(), n) << "p " << p << " dimensions " << d << ", " << e;
+        }
+}
+
 TEST(Stratification, Stratified) {
   for (uint requested : {1u, 4u, 10u, 16u, 64u, 256u}) {
     expect_stratified(SAMPLER_STRATIFIED, requested, true);
@@ -163,6 +189,14 @@ TEST(Stratification, Multijitter) {
   for (uint requested : {1u, 2u, 5u, 10u, 16u, 64u, 100u, 250u}) {
     expect_stratified(SAMPLER_MULTIJITTER, requested, true);
     expect_stratified(SAMPLER_MULTIJITTER, requested, false);
+  }
+}
+
+TEST(Stratification, Orthogonal) {
+  for (uint requested : {4u, 9u, 25u, 49u, 121u, 289u}) {
+    expect_stratified(SAMPLER_ORTHOGONAL, requested, true);
+    expect_stratified(SAMPLER_ORTHOGONAL, requested, false);
+    expect_strength_two(requested);
   }
 }
 
@@ -213,10 +247,11 @@ TEST(Uniformity, ChiSquare) {
 }
 
 // RMSE of the mean of a smooth integrand over 256 samples, over 200 pixels (independent
-// randomizations): a stratified sampler's error falls faster than 1/sqrt(N), so at N = 256
-// it must be far below `independent`'s (expected ratios are ~0.1; asserted: below 0.5).
+// randomizations; orthogonal: 289 = 17^2): a stratified sampler's error falls faster than
+// 1/sqrt(N), so at N = 256 it must be far below `independent`'s (expected ratios are ~0.1;
+// asserted: below 0.5).
 double rmse(const Sampler& s, bool two_d) {
-  const uint n = 256, kPixels = 200;
+  const uint n = s.sample_count, kPixels = 200;
   // Integrands and their exact integrals over [0,1) and [0,1)^2.
   const double exact_1d = 1.0 - std::cos(1.0), exact_2d = (std::exp(1.0) - 1.0) * 0.5;
   double sum_sq = 0.0;
