@@ -1,5 +1,6 @@
 #include "scenes/sampler.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -8,6 +9,10 @@ namespace tr {
 namespace {
 
 const std::uint64_t MAX_PASS = 1u << 24;  // pass indices stay exact in float (core/samplers/)
+
+// Mitsuba's plugin names, by SAMPLER_*.
+const std::array<const char*, 5> SAMPLER_NAMES = {"independent", "stratified", "ldsampler",
+                                                  "multijitter", "orthogonal"};
 
 std::uint64_t smallest_prime_at_least(std::uint64_t x) {
   for (;; ++x) {
@@ -20,29 +25,15 @@ std::uint64_t smallest_prime_at_least(std::uint64_t x) {
 }  // namespace
 
 bool sampler_type_of(const std::string& name, uint& type) {
-  for (uint t : {SAMPLER_INDEPENDENT, SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER,
-                 SAMPLER_ORTHOGONAL})
-    if (name == sampler_name(t)) {
+  for (uint t = 0; t < SAMPLER_NAMES.size(); ++t)
+    if (name == SAMPLER_NAMES[t]) {
       type = t;
       return true;
     }
   return false;
 }
 
-const char* sampler_name(uint type) {
-  switch (type) {
-    case SAMPLER_STRATIFIED:
-      return "stratified";
-    case SAMPLER_LDSAMPLER:
-      return "ldsampler";
-    case SAMPLER_MULTIJITTER:
-      return "multijitter";
-    case SAMPLER_ORTHOGONAL:
-      return "orthogonal";
-    default:
-      return "independent";
-  }
-}
+const char* sampler_name(uint type) { return SAMPLER_NAMES.at(type); }
 
 uint rounded_sample_count(uint type, uint requested) {
   std::uint64_t n = requested;

@@ -2,19 +2,17 @@
 # A stratified sampler's sample_count, and --spp, are rounded as Mitsuba rounds them; the render
 # summary and the EXR metadata (twinray:spp, twinray:sample_count_rounding) say so.
 set -eu
-twinray=$1
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-cat > "$dir/scene.xml" <<'XML'
-<scene version="3.0.0">
-  <sensor type="perspective">
-    <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
-    <sampler type="stratified"><integer name="sample_count" value="10"/></sampler>
-  </sensor>
-  <shape type="sphere"><transform name="to_world"><translate z="4"/></transform></shape>
-  <emitter type="constant"/>
-</scene>
-XML
+twinray=$1
+{
+  echo '<scene version="3.0.0"><emitter type="constant"/>'
+  echo '  <shape type="sphere"><transform name="to_world"><translate z="4"/></transform></shape>'
+  echo '  <sensor type="perspective"><sampler type="stratified">'
+  echo '    <integer name="sample_count" value="10"/></sampler>'
+  echo '    <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>'
+  echo '  </sensor></scene>'
+} >"$dir/scene.xml"
 "$twinray" render "$dir/scene.xml" -o "$dir/a.exr" >"$dir/a.txt"
 grep -q '^twinray: 8x8, 16 spp' "$dir/a.txt" || { cat "$dir/a.txt"; echo "expected 16 spp"; exit 1; }
 grep -q '^twinray: stratified: sample_count 10 rounded up to 16, as Mitsuba$' "$dir/a.txt" ||

@@ -52,31 +52,27 @@ TEST(Permute, IsABijectionForAnyLength) {
 
 // src/samplers/*.cpp set_sample_count in Mitsuba 3.8.
 TEST(SampleCount, RoundsAsMitsuba) {
-  auto n = rounded_sample_count;
-  EXPECT_EQ(n(SAMPLER_INDEPENDENT, 10), 10u);
-  EXPECT_EQ(n(SAMPLER_STRATIFIED, 1), 1u);
-  EXPECT_EQ(n(SAMPLER_STRATIFIED, 2), 4u);
-  EXPECT_EQ(n(SAMPLER_STRATIFIED, 10), 16u);
-  EXPECT_EQ(n(SAMPLER_STRATIFIED, 16), 16u);
-  EXPECT_EQ(n(SAMPLER_STRATIFIED, 17), 25u);
-  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 1), 4u);  // the grid starts at 2 x 2
-  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 5), 16u);
-  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 16), 16u);
-  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 17), 64u);
-  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 25), 64u);
-  EXPECT_EQ(n(SAMPLER_LDSAMPLER, 1000), 1024u);
-  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 1), 1u);
-  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 2), 2u);    // 1 row of 2
-  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 5), 6u);    // 2 rows of 3
-  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 10), 12u);  // 3 rows of 4
-  EXPECT_EQ(n(SAMPLER_MULTIJITTER, 16), 16u);
-  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 1), 4u);  // the smallest prime is 2
-  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 5), 9u);
-  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 10), 25u);  // 4 is not prime
-  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 16), 25u);
-  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 50), 121u);  // 8, 9 and 10 are not prime
-  EXPECT_EQ(n(SAMPLER_ORTHOGONAL, 289), 289u);
-  EXPECT_THROW(n(SAMPLER_STRATIFIED, (1u << 24) + 1u), SceneError);
+  struct Rounding {
+    uint type, requested, rendered;
+  };
+  const Rounding table[] = {
+      {SAMPLER_INDEPENDENT, 10, 10},  {SAMPLER_STRATIFIED, 1, 1},      {SAMPLER_STRATIFIED, 2, 4},
+      {SAMPLER_STRATIFIED, 10, 16},   {SAMPLER_STRATIFIED, 16, 16},    {SAMPLER_STRATIFIED, 17, 25},
+      {SAMPLER_LDSAMPLER, 1, 4},  // the grid starts at 2 x 2
+      {SAMPLER_LDSAMPLER, 5, 16},     {SAMPLER_LDSAMPLER, 16, 16},     {SAMPLER_LDSAMPLER, 17, 64},
+      {SAMPLER_LDSAMPLER, 25, 64},    {SAMPLER_LDSAMPLER, 1000, 1024}, {SAMPLER_MULTIJITTER, 1, 1},
+      {SAMPLER_MULTIJITTER, 2, 2},                                    // 1 row of 2
+      {SAMPLER_MULTIJITTER, 5, 6},                                    // 2 rows of 3
+      {SAMPLER_MULTIJITTER, 10, 12},                                  // 3 rows of 4
+      {SAMPLER_MULTIJITTER, 16, 16},  {SAMPLER_ORTHOGONAL, 1, 4},     // the smallest prime is 2
+      {SAMPLER_ORTHOGONAL, 5, 9},     {SAMPLER_ORTHOGONAL, 10, 25},   // 4 is not prime
+      {SAMPLER_ORTHOGONAL, 16, 25},   {SAMPLER_ORTHOGONAL, 50, 121},  // 8, 9 and 10 are not prime
+      {SAMPLER_ORTHOGONAL, 289, 289},
+  };
+  for (const Rounding& r : table)
+    EXPECT_EQ(rounded_sample_count(r.type, r.requested), r.rendered)
+        << sampler_name(r.type) << " " << r.requested;
+  EXPECT_THROW(rounded_sample_count(SAMPLER_STRATIFIED, (1u << 24) + 1u), SceneError);
 }
 
 TEST(SampleCount, SaysWhenItRounds) {
