@@ -139,11 +139,11 @@ void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOu
       "rejected\n",
       r.width, r.height, r.spp, s.seconds, sps * 1e-6, rps * 1e-6,
       static_cast<unsigned long long>(s.rejected_nonfinite));
-  if (!sample_count_note.empty()) std::printf("twinray: %s\n", sample_count_note.c_str());
   std::printf("twinray: stopped: %s; estimated relative error %.4g\n",
               stop_reason_name(outcome.stop), outcome.error);
   std::printf("twinray: backend %s (%s); wrote %s, %s, %s\n", r.backend.c_str(), r.device.c_str(),
               paths.image.c_str(), paths.variance.c_str(), paths.preview.c_str());
+  if (!sample_count_note.empty()) std::printf("twinray: %s\n", sample_count_note.c_str());
 }
 
 }  // namespace
