@@ -237,7 +237,7 @@ const uint SAMPLER_ORTHOGONAL = 4u;   // core/samplers/orthogonal.h
 // dimension's points are stratified (Mitsuba semantics, after its sample_count rounding).
 struct Sampler {
   uint type;          // SAMPLER_*
-  uint sample_count;  // points of one pass (rounded as Mitsuba rounds it)
+  uint sample_count;  // points of one pass (rounded as Mitsuba rounds it); independent: 1
   uvec2 resolution;   // stratified: sqrt(sample_count) twice; multijitter: its grid;
                       // orthogonal: the prime p twice
   uint jitter;        // stratified, multijitter, orthogonal: 1 to jitter within strata, 0 for

@@ -63,7 +63,9 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
   uint n = rounded_sample_count(type, requested);
   Sampler& s = scene.buffers.globals.sampler_params;
   s.type = type;
-  s.sample_count = n;
+  // independent has no passes: its record stays the same whatever the count, so that a
+  // checkpoint resumes under another --spp (the scene digest covers the record).
+  s.sample_count = type == SAMPLER_INDEPENDENT ? 1u : n;
   s.jitter = jitter ? 1u : 0u;
   s.resolution = uvec2(1u);
   if (type == SAMPLER_STRATIFIED || type == SAMPLER_ORTHOGONAL) {
@@ -73,7 +75,7 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
     uint rows = uint(std::sqrt(float(requested)));
     s.resolution = uvec2(n / rows, rows);
   }
-  s.inv_sample_count = 1.0f / float(n);
+  s.inv_sample_count = 1.0f / float(s.sample_count);
   s.inv_resolution = vec2(1.0f) / vec2(s.resolution);
   scene.spp = n;
   scene.sample_count_note.clear();

@@ -84,6 +84,9 @@ TEST(SampleCount, SaysWhenItRounds) {
   set_sample_count(scene, 25);
   EXPECT_EQ(scene.spp, 25u);
   EXPECT_EQ(scene.sample_count_note, "");
+  set_sampler(scene, SAMPLER_INDEPENDENT, 10, true);
+  EXPECT_EQ(scene.spp, 10u);
+  EXPECT_EQ(scene.buffers.globals.sampler_params.sample_count, 1u) << "no passes: one record";
   set_sampler(scene, SAMPLER_MULTIJITTER, 10, false);
   EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(4u, 3u));
   EXPECT_EQ(scene.buffers.globals.sampler_params.jitter, 0u);
