@@ -167,7 +167,12 @@ int render_command(int argc, char** argv) {
     check_output_directory(paths.image);
     Scene scene = load_scene(a.scene, a.load);
     if (a.render.spp) {
-      set_sample_count(scene, a.render.spp);
+      try {
+        set_sample_count(scene, a.render.spp);
+      } catch (const SceneError& e) {
+        std::fprintf(stderr, "twinray render: --spp %u: %s\n", a.render.spp, e.what());
+        return kExitUsage;
+      }
       a.render.spp = scene.spp;
     }
     a.render.seed = a.seed.value_or(scene.seed);

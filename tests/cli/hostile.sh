@@ -107,6 +107,10 @@ lit huge_size '<shape type="sphere"/>'
 sed -i 's/value="8"/value="60000"/g' "$d/huge_size.xml"
 lit negative_spp '<shape type="sphere"/>'
 sed -i 's/name="sample_count" value="2"/name="sample_count" value="-4"/' "$d/negative_spp.xml"
+lit stratified_ok '<shape type="sphere"/>'
+sed -i 's/type="independent"/type="stratified"/' "$d/stratified_ok.xml"
+lit stratified_huge_spp '<shape type="sphere"/>'
+sed -i 's/type="independent"><integer name="sample_count" value="2"/type="stratified"><integer name="sample_count" value="20000000"/' "$d/stratified_huge_spp.xml"
 scene empty_scene ''
 scene no_emitter '<shape type="sphere"/>'
 echo '<scene version="3.0.0"/>' >"$d/bare.xml"
@@ -196,6 +200,8 @@ check scene_without_emitters 0 'twinray: 8x8' -- $(r no_emitter)
 check scene_without_sensor 3 'bare\.xml:[0-9]+: .*no <sensor>' -- render "$d/bare.xml" -o "$d/out/img.exr"
 check absurd_spp 2 '--spp' -- $(r ok) --spp 99999999999
 check zero_spp 2 '--spp' -- $(r ok) --spp 0
+check stratified_pass_too_large 3 'stratified_huge_spp\.xml:[0-9]+: .*sample_count 20000000 exceeds 2\^24' -- $(r stratified_huge_spp)
+check stratified_spp_too_large 2 '--spp 20000000: stratified: sample_count 20000000 exceeds 2\^24' -- $(r stratified_ok) --spp 20000000
 check no_scene_file 3 'nowhere\.xml' -- render "$d/nowhere.xml" -o "$d/out/img.exr"
 check scene_is_a_folder 3 'readonly' -- render "$d/readonly" -o "$d/out/img.exr"
 check unwritable_output_folder 5 'proc' -- render "$d/ok.xml" -o /proc/img.exr
