@@ -18,7 +18,6 @@ struct Entry {
 const char* const POLARIZATION = "out of scope: polarization (twinray renders unpolarized RGB)";
 const char* const MEDIA = "out of scope: participating media (twinray renders surfaces in vacuum)";
 const char* const CURVES = "out of scope: curve primitives";
-const char* const PLUGINS_ISSUE = "planned: the Mitsuba plugins issue";
 const char* const SAMPLERS_ISSUE = "planned: the samplers issue";
 const char* const NOT_YET = "not implemented by twinray";
 
@@ -103,8 +102,11 @@ const Entry TABLE[] = {
     {"sampler", "independent", PluginSupport::Supported, ""},
     {"sampler", "stratified", PluginSupport::Supported, ""},
     {"sampler", "multijitter", PluginSupport::Supported, ""},
-    {"sampler", "orthogonal", PluginSupport::Planned, SAMPLERS_ISSUE},
+    {"sampler", "orthogonal", PluginSupport::Supported, ""},
     {"sampler", "ldsampler", PluginSupport::Supported, ""},
+    // twinray samplers beyond Mitsuba (pbrt-v4's), named by the samplers issue
+    {"sampler", "sobol", PluginSupport::Planned, SAMPLERS_ISSUE},
+    {"sampler", "zsobol", PluginSupport::Planned, SAMPLERS_ISSUE},
     // integrators
     {"integrator", "path", PluginSupport::Supported, ""},
     {"integrator", "direct", PluginSupport::Supported, ""},

@@ -20,7 +20,7 @@ XML
 }
 scene a_good '<shape type="sphere"><transform name="to_world"><translate z="4"/></transform></shape><emitter type="constant"/>'
 scene b_hair '<shape type="sphere"><bsdf type="hair"/></shape>'
-scene c_planned '<shape type="sphere"/>' orthogonal
+scene c_planned '<shape type="sphere"/>' sobol
 scene d_typo '<shape type="sphere"><float name="radiuss" value="1"/></shape>'
 
 status=0
@@ -30,7 +30,7 @@ cat "$dir/out.txt"
 expect() { grep -q -- "$1" "$dir/out.txt" || { echo "missing line: $1"; exit 1; }; }
 expect '^rendered  *a_good.xml'
 expect '^out-of-scope  *b_hair.xml .*not supported by twinray: hair (out of scope'
-expect '^planned  *c_planned.xml .*not supported by twinray: orthogonal (planned'
+expect '^planned  *c_planned.xml .*not supported by twinray: sobol (planned'
 expect "^FAILED  *d_typo.xml .*d_typo.xml:7: unused parameter 'radiuss'"
 expect '^4 scenes: 1 rendered, 1 planned, 1 out-of-scope, 1 FAILED$'
 [ -s "$dir/previews/a_good.png" ] || { echo "no preview for the rendered scene"; exit 1; }

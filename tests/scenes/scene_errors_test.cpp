@@ -55,8 +55,8 @@ TEST(SceneErrors, UnknownPlugins) {
                "plugin)");
   expect_error("\n<shape type=\"sphere\">\n<bsdf type=\"velvet\"/></shape>", "velvet",
                "not supported by twinray: velvet (Mitsuba 3 has no such plugin)");
-  expect_error("\n\n<sensor type=\"perspective\"><sampler type=\"orthogonal\"/></sensor>",
-               "orthogonal", "not supported by twinray: orthogonal (planned: the samplers issue)");
+  expect_error("\n\n<sensor type=\"perspective\"><sampler type=\"sobol\"/></sensor>", "sobol",
+               "not supported by twinray: sobol (planned: the samplers issue)");
   expect_error("<integrator type=\"volpath\"/>", "volpath",
                "not supported by twinray: volpath (out of scope: participating media");
   expect_error(
