@@ -21,6 +21,7 @@
 #include "io/image.h"
 #include "io/temp_file.h"
 #include "render/checkpoint.h"
+#include "render/film_error.h"
 #include "render/write_result.h"
 #include "scenes/load_scene.h"
 #include "scenes/sampler.h"
@@ -139,8 +140,12 @@ void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOu
       "rejected\n",
       r.width, r.height, r.spp, s.seconds, sps * 1e-6, rps * 1e-6,
       static_cast<unsigned long long>(s.rejected_nonfinite));
-  std::printf("twinray: stopped: %s; estimated relative error %.4g\n",
-              stop_reason_name(outcome.stop), outcome.error);
+  if (std::isfinite(outcome.error))
+    std::printf("twinray: stopped: %s; estimated relative error %.4g\n",
+                stop_reason_name(outcome.stop), outcome.error);
+  else
+    std::printf("twinray: stopped: %s; relative error not estimated below %u spp\n",
+                stop_reason_name(outcome.stop), kMinErrorSamples);
   std::printf("twinray: backend %s (%s); wrote %s, %s, %s\n", r.backend.c_str(), r.device.c_str(),
               paths.image.c_str(), paths.variance.c_str(), paths.preview.c_str());
   if (!sample_count_note.empty()) std::printf("twinray: %s\n", sample_count_note.c_str());
