@@ -80,6 +80,7 @@ Samples read_samples(const std::string& path, const HeaderCheck& check) {
   if (starts_with(head, "\x89PNG")) return read_png_samples(path, check);
   if (starts_with(head, "\xff\xd8\xff")) return read_jpeg_samples(path, check);
   if (starts_with(head, "PF") || starts_with(head, "Pf")) return read_pfm_samples(path, check);
+  if (starts_with(head, "P5") || starts_with(head, "P6")) return read_pnm_samples(path, check);
   return read_stb_samples(path, check);
 }
 

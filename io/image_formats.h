@@ -1,7 +1,7 @@
 // The image file formats twinray reads, each through its reference library: OpenEXR (Imf),
-// PNG (libpng), JPEG (libjpeg), Radiance RGBE, BMP, TGA and PNM (stb_image) and PFM (a reader
-// of its own). They deliver the file's samples unconverted: integer samples scaled to [0, 1],
-// float samples as stored, no colour transfer function applied.
+// PNG (libpng), JPEG (libjpeg), Radiance RGBE, BMP and TGA (stb_image), and Netpbm's PGM, PPM
+// and PFM (a reader of its own). They deliver the file's samples unconverted: integer samples
+// scaled to [0, 1], float samples as stored, no colour transfer function applied.
 #pragma once
 
 #include <functional>
@@ -44,9 +44,10 @@ Samples read_samples(const std::string& path, const HeaderCheck& check);
 Samples read_exr_samples(const std::string& path, const HeaderCheck& check);
 Samples read_png_samples(const std::string& path, const HeaderCheck& check);
 Samples read_jpeg_samples(const std::string& path, const HeaderCheck& check);
-// Radiance RGBE (.hdr), BMP, TGA and binary PNM (.ppm/.pgm).
+// Radiance RGBE (.hdr), BMP and TGA.
 Samples read_stb_samples(const std::string& path, const HeaderCheck& check);
-// Portable float map: "PF" (RGB) or "Pf" (grey), little- or big-endian by the scale's sign.
+// Binary PGM/PPM (P5, P6) and portable float maps (PF, Pf).
+Samples read_pnm_samples(const std::string& path, const HeaderCheck& check);
 Samples read_pfm_samples(const std::string& path, const HeaderCheck& check);
 
 // `values` in the order of `names`; 16-bit floats when `half`; ZIP compression; metadata as

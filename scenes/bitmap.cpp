@@ -113,8 +113,11 @@ Image load_image(const std::string& path, bool raw) {
       image.channels = channels;
       check_size(image);
     });
-  } catch (const FileError& e) {  // the readers' ImageError
-    throw std::runtime_error(std::string("cannot open image: ") + e.what());
+  } catch (const FileError& e) {
+    // The readers' ImageError reads "path: reason"; the scene loader names the path itself.
+    std::string reason = e.what();
+    if (reason.rfind(path + ": ", 0) == 0) reason.erase(0, path.size() + 2);
+    throw std::runtime_error("cannot open image: " + reason);
   }
   image.bytes_per_channel = samples.bytes_per_channel;
 
