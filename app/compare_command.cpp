@@ -19,7 +19,8 @@ constexpr int kPass = 0, kFail = 1, kBadInput = 2, kOutputFailed = 5;
 
 const char* kUsage = R"(usage: twinray compare A.exr B.exr [options]
 
-Compares test image A with reference image B (any format OpenImageIO reads; RGB channels).
+Compares test image A with reference image B (EXR, PNG, JPEG, HDR, PFM, PPM, BMP or TGA; RGB
+channels).
 
 Inputs of the statistical tests:
   --var-a FILE          per-sample variance of A (e.g. a Mitsuba `moment` variance image)

@@ -1,4 +1,5 @@
-// Image files: read any format OpenImageIO reads, write float EXR and 8-bit sRGB PNG.
+// Image files: read EXR, PNG, JPEG, RGBE, PFM, PNM, BMP and TGA (io/image_formats.h), write float
+// EXR and 8-bit sRGB PNG.
 // Writes are atomic: the image goes to a temporary file in the destination's directory which
 // is then renamed over the destination, so a reader sees the old file or the new one, never a
 // partial one, and a failed write leaves the old file untouched.

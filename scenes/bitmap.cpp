@@ -1,6 +1,5 @@
 #include "scenes/bitmap.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -8,6 +7,9 @@
 #include <cstdint>
 #include <fstream>
 #include <stdexcept>
+
+#include "io/image_formats.h"
+#include "io/temp_file.h"
 
 namespace tr {
 
@@ -20,9 +22,9 @@ namespace {
 // Integer samples are sRGB-decoded unless raw; 8-bit data takes only 256 values, decoded once.
 class ToLinear {
  public:
-  ToLinear(const OIIO::TypeDesc& format, bool raw)
-      : decode_(!raw && !format.is_floating_point()),
-        eight_bit_(format.basetype == OIIO::TypeDesc::UINT8) {
+  ToLinear(const Samples& samples, bool raw)
+      : decode_(!raw && !samples.floating),
+        eight_bit_(!samples.floating && samples.bytes_per_channel == 1) {
     for (int i = 0; i < 256; ++i) table_[i] = srgb_to_linear(i / 255.0f);
   }
   glm::vec4 operator()(glm::vec4 t) const {
@@ -39,12 +41,6 @@ class ToLinear {
   bool eight_bit_;
   float table_[256];
 };
-
-std::string one_line(std::string message) {
-  for (char& c : message)
-    if (c == '\n') c = ' ';
-  return message;
-}
 
 // The header's size is checked before anything is allocated for it: a corrupt or hostile
 // header may claim billions of texels in a file of a few bytes.
@@ -108,44 +104,35 @@ void check_exr_attributes(const std::string& path) {
 
 Image load_image(const std::string& path, bool raw) {
   check_exr_attributes(path);
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw std::runtime_error("cannot open image: " + one_line(OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
   Image image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.channels = spec.nchannels;
-  image.bytes_per_channel = int(spec.format.size());
-  check_size(image);
-
-  // Read in bands of rows so that memory grows with the data the file really holds; a tiled
-  // file in bands of whole tile rows (OpenImageIO 2.4's read_scanlines fails on tiled files).
-  if (spec.depth > 1) throw std::runtime_error("volume images are not textures");
-  const ToLinear to_linear(spec.format, raw);
-  const int unit = std::clamp(spec.tile_height, 1, image.height);
-  const int band = unit * std::max(1, (1 << 20) / (image.width * unit));
-  std::vector<float> rows(size_t(image.width) * std::min(band, image.height) * image.channels);
-  for (int y0 = 0; y0 < image.height; y0 += band) {
-    const int y1 = std::min(image.height, y0 + band);
-    const bool read =
-        spec.tile_width > 0
-            ? in->read_tiles(0, 0, spec.x, spec.x + image.width, spec.y + y0, spec.y + y1, spec.z,
-                             spec.z + 1, 0, image.channels, OIIO::TypeDesc::FLOAT, rows.data())
-            : in->read_scanlines(0, 0, spec.y + y0, spec.y + y1, 0, 0, image.channels,
-                                 OIIO::TypeDesc::FLOAT, rows.data());
-    if (!read) throw std::runtime_error("cannot read image: " + one_line(in->geterror()));
-    for (size_t i = 0; i < size_t(image.width) * (y1 - y0); ++i) {
-      const float* px = &rows[i * image.channels];
-      glm::vec4 t = image.channels <= 2
-                        ? glm::vec4(px[0], px[0], px[0], image.channels == 2 ? px[1] : 1.0f)
-                        : glm::vec4(px[0], px[1], px[2], image.channels == 4 ? px[3] : 1.0f);
-      t = to_linear(t);
-      if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
-        throw std::runtime_error("image contains NaN or infinite values");
-      image.texels.push_back(t);
-    }
+  Samples samples;
+  try {
+    samples = read_samples(path, [&image](int width, int height, int channels) {
+      image.width = width;
+      image.height = height;
+      image.channels = channels;
+      check_size(image);
+    });
+  } catch (const FileError& e) {
+    // The readers' ImageError reads "path: reason"; the scene loader names the path itself.
+    std::string reason = e.what();
+    if (reason.rfind(path + ": ", 0) == 0) reason.erase(0, path.size() + 2);
+    throw std::runtime_error("cannot open image: " + reason);
   }
-  in->close();
+  image.bytes_per_channel = samples.bytes_per_channel;
+
+  const ToLinear to_linear(samples, raw);
+  image.texels.reserve(size_t(image.width) * image.height);
+  for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+    const float* px = &samples.values[i * image.channels];
+    glm::vec4 t = image.channels <= 2
+                      ? glm::vec4(px[0], px[0], px[0], image.channels == 2 ? px[1] : 1.0f)
+                      : glm::vec4(px[0], px[1], px[2], image.channels == 4 ? px[3] : 1.0f);
+    t = to_linear(t);
+    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
+      throw std::runtime_error("image contains NaN or infinite values");
+    image.texels.push_back(t);
+  }
   return image;
 }
 

@@ -1,5 +1,5 @@
-// Image files -> linear RGBA texels (OpenImageIO), row-major with the top row first, the
-// layout of SceneBuffers::texels and core/texture.h.
+// Image files -> linear RGBA texels (io/image_formats.h readers), row-major with the top row first,
+// the layout of SceneBuffers::texels and core/texture.h.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -90,6 +90,9 @@ texture folder_image folder.png
 # Found by scripts/fuzz: a BMP header claiming 2 x 100663298 texels (an allocation of gigabytes).
 printf '\x42\x4d\x46\x00\x00\x00\x00\x00\x00\x00\x36\x00\x00\x00\x28\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x06\x01\x00\x18\x00\x00\x00\x00\x00\x04\x00\x00\x09\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xff\xff\xff\x00\x00\x00\x00\x00\x00\x00\x00\xff\xff\xff\x00\x00' >"$d/huge.bmp"
 texture huge_image huge.bmp
+# Found by scripts/fuzz: a PPM header claiming 303 x 65534 texels in a file of a few bytes.
+printf 'P6\n303\n65534\n255\n\x00\x00\x0b\xb8' >"$d/short.ppm"
+texture short_image short.ppm
 lit nan_radius '<shape type="sphere"><float name="radius" value="nan"/></shape>'
 lit inf_translate '<shape type="sphere"><transform name="to_world"><translate x="inf"/></transform></shape>'
 scene nan_radiance '<shape type="sphere"/><emitter type="constant"><rgb name="radiance" value="nan, 1, 1"/></emitter>'
@@ -182,6 +185,7 @@ check empty_image 3 'empty_image\.xml:[0-9]+: .*empty\.png' -- $(r empty_image)
 check corrupt_image 3 'corrupt_image\.xml:[0-9]+: .*corrupt\.png' -- $(r corrupt_image)
 check image_is_a_folder 3 'folder_image\.xml:[0-9]+: .*folder\.png' -- $(r folder_image)
 check image_header_too_large 3 'huge_image\.xml:[0-9]+: .*65536 per side' -- $(r huge_image)
+check image_shorter_than_header 3 'short_image\.xml:[0-9]+: .*ends before' -- $(r short_image)
 check nan_radius 3 'nan_radius\.xml:[0-9]+: .*radius' -- $(r nan_radius)
 check inf_transform 3 'inf_translate\.xml:[0-9]+: ' -- $(r inf_translate)
 check nan_radiance 3 'nan_radiance\.xml:[0-9]+: .*radiance' -- $(r nan_radiance)

@@ -1,11 +1,10 @@
 #include "delta_emitters.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 #include <vector>
+
+#include "io/image.h"
 
 namespace tr {
 namespace {
@@ -32,13 +31,14 @@ EmitterSample sample_towards(vec3 p) {
 
 std::string write_texel_positions(const std::string& name, int width, int height) {
   std::string path = (test_dir() / (name + ".exr")).string();
-  std::vector<float> texels;
+  Image texels;
+  texels.width = width;
+  texels.height = height;
+  texels.channels = 3;
   for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i) texels.insert(texels.end(), {float(i), float(j), 1.0f});
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out || !out->open(path, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT)) ||
-      !out->write_image(OIIO::TypeDesc::FLOAT, texels.data()) || !out->close())
-    throw std::runtime_error("cannot write " + path);
+    for (int i = 0; i < width; ++i)
+      texels.pixels.insert(texels.pixels.end(), {float(i), float(j), 1.0f});
+  write_exr(path, texels);
   return path;
 }
 

@@ -1,4 +1,5 @@
 // Image I/O: EXR round trip with metadata, sRGB PNG encoding, atomic writes, colormaps.
+#include <Imath/half.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -71,6 +72,20 @@ TEST_F(ImageIoTest, ExrRoundTripKeepsPixelsExactlyAndMetadata) {
   mode_t mask = umask(0);
   umask(mask);
   EXPECT_EQ(fs::status(path).permissions(), fs::perms(0666 & ~mask));  // not mkstemp's 0600
+}
+
+// The render's AOV layout: R, G, B, then layers; EXR stores channels sorted by name, the reader
+// restores R, G, B first and each layer's R, G, B in order. Half values round to nearest.
+TEST_F(ImageIoTest, ExrKeepsAovChannelOrderInHalf) {
+  Image img = ramp(3, 2, 8, 0.3f);
+  img.channel_names = {"R", "G", "B", "alb.R", "alb.G", "alb.B", "dd.T", "id.I"};
+  std::string path = (dir_ / "aov.exr").string();
+  write_exr(path, img, true);
+  Image back = read_image(path);
+  EXPECT_EQ(back.channel_names, img.channel_names);
+  ASSERT_EQ(back.pixels.size(), img.pixels.size());
+  for (size_t i = 0; i < img.pixels.size(); ++i)
+    EXPECT_EQ(back.pixels[i], float(Imath::half(img.pixels[i]))) << i;
 }
 
 TEST_F(ImageIoTest, ReadsTheMitsubaReference) {

@@ -5,6 +5,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "scene_test_files.h"
 #include "scenes/bitmap.h"
 
@@ -261,6 +263,55 @@ TEST(Texture, TiledAndOffsetImagesLoadWhole) {
       ASSERT_EQ(image.texels[i], glm::vec4(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2], 1))
           << exr << " texel " << i;
   }
+}
+
+// PNG alpha stays unassociated, as Mitsuba 3.8's Bitmap::read_png leaves it
+// (m_premultiplied_alpha = false): a grey texel under alpha 0 keeps its grey.
+TEST(Texture, PngAlphaIsNotPremultiplied) {
+  std::filesystem::path dir = fresh_dir();
+  std::string png = (dir / "grey_alpha.png").string();
+  const unsigned char pixels[] = {128, 0, 128, 255, 255, 64, 0, 255};
+  auto out = OIIO::ImageOutput::create(png);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 2, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+  Image raw = load_image(png, true);
+  ASSERT_EQ(raw.channels, 2);
+  EXPECT_EQ(raw.texels[0], glm::vec4(glm::vec3(128.0f / 255.0f), 0.0f));
+  EXPECT_EQ(raw.texels[2], glm::vec4(glm::vec3(1.0f), 64.0f / 255.0f));
+  EXPECT_EQ(load_image(png, false).texels[0],
+            glm::vec4(glm::vec3(srgb_to_linear(128.0f / 255.0f)), 0.0f));
+}
+
+// PFM (bottom row first, byte order by the scale's sign) and 16-bit PPM (most significant byte
+// first, Netpbm) load to the values the files hold.
+TEST(Texture, PfmAndSixteenBitPpmLoadExactly) {
+  std::filesystem::path dir = fresh_dir();
+  auto big_endian = [](const void* p, size_t size) {
+    std::string bytes(static_cast<const char*>(p), size);
+    std::reverse(bytes.begin(), bytes.end());
+    return bytes;
+  };
+  // 1 x 2 grey, rows bottom first: 2.5 (bottom), -0.75 (top).
+  const float bottom = 2.5f, top = -0.75f;
+  std::string little("Pf\n1 2\n-1.0\n");
+  little.append(reinterpret_cast<const char*>(&bottom), 4);
+  little.append(reinterpret_cast<const char*>(&top), 4);
+  std::string big = "Pf\n1 2\n1.0\n" + big_endian(&bottom, 4) + big_endian(&top, 4);
+  for (const std::string& file : {little, big}) {
+    Image image = load_image(write_file(dir, "grey.pfm", file), false);
+    ASSERT_EQ(image.texels.size(), 2u);
+    EXPECT_EQ(image.texels[0], glm::vec4(-0.75f, -0.75f, -0.75f, 1.0f));
+    EXPECT_EQ(image.texels[1], glm::vec4(2.5f, 2.5f, 2.5f, 1.0f));
+    EXPECT_EQ(image.bytes_per_channel, 4);
+  }
+  const std::string ppm =
+      std::string("P6\n1 1\n65535\n") + std::string("\x03\xe8\x75\x30\xff\xff", 6);
+  Image image = load_image(write_file(dir, "rgb16.ppm", ppm), true);
+  EXPECT_EQ(image.bytes_per_channel, 2);
+  EXPECT_EQ(image.texels[0],
+            glm::vec4(1000.0f * (1.0f / 65535.0f), 30000.0f * (1.0f / 65535.0f), 1.0f, 1.0f));
 }
 
 // A 70-byte BMP whose header claims 2 x 100663298 texels (found by scripts/fuzz) is refused
