@@ -9,6 +9,7 @@
 #include "core/frame.h"
 #include "core/material_slots.h"
 #include "scenes/alias_table.h"
+#include "scenes/obj_file.h"
 #include "scenes/scene_builder.h"
 #include "scenes/serialized.h"
 
@@ -59,7 +60,7 @@ void set_transforms(Shape& r, const glm::dmat4& m) {
 
 }  // namespace
 
-const TriangleMesh& SceneBuilder::mesh_file(Node& n) {
+const TriangleMesh& SceneBuilder::mesh_file(Node& n, bool face_normals) {
   std::string path = resolve_file(n, take_string(n, "filename"), "mesh file");
   const Location& file_loc = find_property(n, "filename")->loc;
   if (n.type == "serialized") {
@@ -80,11 +81,15 @@ const TriangleMesh& SceneBuilder::mesh_file(Node& n) {
     }
   } else {
     bool flip_tex = take_bool(n, "flip_tex_coords", n.type == "obj");
-    std::string key = path + (flip_tex ? "|flip" : "");
+    const bool obj = n.type == "obj";
+    std::string key = path + (obj ? "|obj" : "|ply") + (flip_tex ? "|flip" : "") +
+                      (obj && face_normals ? "|face_normals" : "");
     auto cached = mesh_cache_.find(key);
     if (cached != mesh_cache_.end()) return cached->second;
     try {
-      return mesh_cache_.emplace(key, load_mesh_file(path, flip_tex)).first->second;
+      TriangleMesh mesh = obj ? read_obj_file(path, flip_tex, face_normals)
+                              : load_ply_mesh(path, flip_tex);
+      return mesh_cache_.emplace(key, std::move(mesh)).first->second;
     } catch (const std::exception& e) {
       fail(file_loc, path, ": ", e.what());
     }
@@ -143,7 +148,7 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
     r.type = SHAPE_MESH;
     bool face_normals = take_bool(n, "face_normals", false);  // every Mitsuba mesh reads it
     if (from_file) {
-      s.mesh = mesh_file(n);
+      s.mesh = mesh_file(n, face_normals);
       // Mitsuba 3.8's serialized loader skips the vertex colors (src/shapes/serialized.cpp):
       // such a mesh has no attributes there.
       if (type == "serialized") s.mesh.attributes.clear();

@@ -1,15 +1,9 @@
 #include "scenes/mesh.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include <algorithm>
-#include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "io/srgb.h"
 #include "scenes/ply_check.h"
@@ -17,43 +11,6 @@
 namespace tr {
 
 namespace {
-
-// Merges vertices whose position, normal and uv are bitwise equal: Mitsuba's OBJ loader keys
-// its vertices by (v, vt, vn) index triples, which this reproduces on Assimp's per-corner data.
-void join_identical_vertices(TriangleMesh& mesh) {
-  struct Key {
-    float f[8];
-    bool operator==(const Key& o) const { return std::memcmp(f, o.f, sizeof(f)) == 0; }
-  };
-  struct Hash {
-    size_t operator()(const Key& k) const {
-      uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes
-      const unsigned char* b = reinterpret_cast<const unsigned char*>(k.f);
-      for (size_t i = 0; i < sizeof(k.f); ++i) h = (h ^ b[i]) * 1099511628211ull;
-      return size_t(h);
-    }
-  };
-  std::unordered_map<Key, uint32_t, Hash> index_of;
-  TriangleMesh out;
-  std::vector<uint32_t> remap(mesh.positions.size());
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    Key k{};
-    glm::vec3 n = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[v];
-    glm::vec2 t = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v];
-    const float values[8] = {
-        mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z, n.x, n.y, n.z, t.x, t.y};
-    std::memcpy(k.f, values, sizeof(values));
-    auto [it, inserted] = index_of.emplace(k, uint32_t(out.positions.size()));
-    if (inserted) {
-      out.positions.push_back(mesh.positions[v]);
-      if (!mesh.normals.empty()) out.normals.push_back(n);
-      if (!mesh.uvs.empty()) out.uvs.push_back(t);
-    }
-    remap[v] = it->second;
-  }
-  for (uint32_t i : mesh.indices) out.indices.push_back(remap[i]);
-  mesh = std::move(out);
-}
 
 // A PLY property as Mitsuba's StructConverter turns it into a float. src/shapes/ply.h flags
 // the integer types from Int8 to UInt64 of its Struct::Type enum Normalized | Gamma: they are
@@ -157,6 +114,8 @@ std::vector<std::pair<std::string, std::vector<size_t>>> ply_attribute_groups(
   return groups;
 }
 
+}  // namespace
+
 // Mitsuba's PLY loader (src/shapes/ply.cpp): vertices x, y, z, optional nx, ny, nz (all three)
 // and u, v (or texture_u, texture_v, or s, t); faces from the list vertex_indices (or
 // vertex_index); other vertex and face properties as mesh attributes (ply_attribute_groups).
@@ -216,59 +175,6 @@ TriangleMesh load_ply_mesh(const std::string& path, bool flip_tex_coords) {
     }
   }
   if (mesh.indices.empty()) throw std::runtime_error("the file contains no triangles");
-  check_finite(mesh);
-  return mesh;
-}
-
-}  // namespace
-
-TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".ply" || ext == ".PLY") return load_ply_mesh(path, flip_tex_coords);
-  Assimp::Importer importer;
-  // No vertex joining (Assimp's merges within an absolute epsilon) and no normal generation
-  // (the caller follows Mitsuba); corners are joined exactly below.
-  const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
-  if (!ai || !ai->mRootNode) throw std::runtime_error(importer.GetErrorString());
-
-  TriangleMesh mesh;
-  bool any_normals = false, all_normals = true, any_uvs = false, all_uvs = true;
-  for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
-    const aiMesh* am = ai->mMeshes[m];
-    if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-    any_normals |= am->HasNormals();
-    all_normals &= am->HasNormals();
-    any_uvs |= am->HasTextureCoords(0);
-    all_uvs &= am->HasTextureCoords(0);
-  }
-  for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
-    const aiMesh* am = ai->mMeshes[m];
-    if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-    uint32_t base = uint32_t(mesh.positions.size());
-    for (unsigned v = 0; v < am->mNumVertices; ++v) {
-      const aiVector3D& p = am->mVertices[v];
-      mesh.positions.emplace_back(p.x, p.y, p.z);
-      if (any_normals && all_normals) {
-        const aiVector3D& n = am->mNormals[v];
-        mesh.normals.emplace_back(n.x, n.y, n.z);
-      }
-      if (any_uvs && all_uvs) {
-        const aiVector3D& t = am->mTextureCoords[0][v];
-        mesh.uvs.emplace_back(t.x, flip_tex_coords ? 1.0f - t.y : t.y);
-      }
-    }
-    for (unsigned f = 0; f < am->mNumFaces; ++f) {
-      const aiFace& face = am->mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
-      for (int k = 0; k < 3; ++k) mesh.indices.push_back(base + face.mIndices[k]);
-    }
-  }
-  if (mesh.indices.empty()) throw std::runtime_error("the file contains no triangles");
-  join_identical_vertices(mesh);
-  if (any_normals && !all_normals)
-    throw std::runtime_error("only some parts of the mesh have vertex normals");
-  if (any_uvs && !all_uvs)
-    throw std::runtime_error("only some parts of the mesh have texture coordinates");
   check_finite(mesh);
   return mesh;
 }

@@ -1,4 +1,4 @@
-// Triangle meshes: loading OBJ/PLY with Mitsuba's semantics, the built-in rectangle and cube,
+// Triangle meshes: loading PLY with Mitsuba's semantics, the built-in rectangle and cube,
 // Mitsuba's angle-weighted vertex normals, and transformation into world space.
 #pragma once
 
@@ -25,11 +25,10 @@ struct TriangleMesh {
   std::map<std::string, VertexAttribute> attributes;
 };
 
-// Loads every triangle of an OBJ (Assimp) or PLY file (Mitsuba's PLY semantics, with its mesh
-// attributes) into one mesh, with the file's normals and uvs if it has them; uv.y = 1 - uv.y
-// when `flip_tex_coords` (Mitsuba's OBJ default).
+// Loads every face of a PLY file with the semantics of Mitsuba's `ply` shape (its normals, uvs
+// and mesh attributes); uv.y = 1 - uv.y when `flip_tex_coords`. OBJ files: scenes/obj_file.h.
 // Throws std::runtime_error with a one-line reason.
-TriangleMesh load_mesh_file(const std::string& path, bool flip_tex_coords);
+TriangleMesh load_ply_mesh(const std::string& path, bool flip_tex_coords);
 
 // Throws std::runtime_error when a position, normal, uv or attribute value is NaN or infinite.
 void check_finite(const TriangleMesh& mesh);

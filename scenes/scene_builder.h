@@ -95,8 +95,8 @@ class SceneBuilder {
   };
   std::vector<PendingInstance> instances_;
   // The object-space mesh of an obj, ply or serialized shape (`filename` and the parameters
-  // that select what is read from it).
-  const TriangleMesh& mesh_file(Node& shape);
+  // that select what is read from it; `face_normals`: an OBJ file's vn lines are not read).
+  const TriangleMesh& mesh_file(Node& shape, bool face_normals);
   void add_shape(Node& shape, std::vector<PendingShape>& out, bool in_group);
   // Checks that the shape has every mesh attribute its material's textures read, with a
   // channel count Mitsuba accepts there, and records which (PendingShape::attribute_slots).

@@ -62,6 +62,13 @@ printf 'v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$d/nan_vertex.obj"
 lit nan_vertex_obj "$(mesh obj nan_vertex.obj)"
 printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 4 5 6\n' >"$d/zero_area.obj"
 lit zero_area_obj "$(mesh obj zero_area.obj)"
+# Found by CI's scripts/fuzz when Assimp read OBJ files: relative (negative) face indices.
+printf '\nf -1//1/-4/rrrrrrrr/to/\n' >"$d/relative_index.obj"
+lit relative_index_obj "$(mesh obj relative_index.obj)"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\n' >"$d/corner_without_uv.obj"
+lit corner_without_uv_obj "$(mesh obj corner_without_uv.obj)"
+{ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n# '; head -c 1100 /dev/zero | tr '\0' x; printf '\nf 1 2 3\n'; } >"$d/long_line.obj"
+lit long_line_obj "$(mesh obj long_line.obj)"
 lit missing_ply "$(mesh ply missing.ply)"
 printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n' >"$d/truncated.ply"
 head -c 20 /dev/urandom >>"$d/truncated.ply"
@@ -73,12 +80,12 @@ ply_ascii() {  # ply_ascii NAME LAST_FACE_LINE
   lit "$1_ply" "$(mesh ply "$1.ply")"
 }
 ply_ascii good_ascii '3 0 1 2'
-# Found by scripts/fuzz (Assimp crashed on it): a vertex element without x, y, z.
+# Found by scripts/fuzz (Assimp, which read PLY files then, crashed on it): no x, y, z.
 printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float v\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n1\n0\n3 0 1 1\n' >"$d/no_xyz.ply"
 lit no_xyz_ply "$(mesh ply no_xyz.ply)"
 ply_ascii index_ascii '3 0 1 7'
 ply_ascii short_ascii '3 0 1'
-ply_ascii two_corner_face '2 0 1'  # found by scripts/fuzz: Assimp aborted on a 0-vertex face
+ply_ascii two_corner_face '2 0 1'  # found by scripts/fuzz (Assimp aborted on it)
 texture() { lit "$1" "<shape type=\"sphere\"><bsdf type=\"diffuse\"><texture name=\"reflectance\" type=\"bitmap\"><string name=\"filename\" value=\"$2\"/></texture></bsdf></shape>"; }
 texture missing_image missing.png
 : >"$d/empty.png"
@@ -171,6 +178,9 @@ check empty_obj 3 'empty_obj\.xml:[0-9]+: .*empty\.obj' -- $(r empty_obj)
 check garbage_obj 3 'garbage_obj\.xml:[0-9]+: .*garbage\.obj' -- $(r garbage_obj)
 check obj_index_out_of_range 3 'bad_index_obj\.xml:[0-9]+: .*bad_index\.obj' -- $(r bad_index_obj)
 check obj_nan_vertex 3 'nan_vertex_obj\.xml:[0-9]+: .*nan_vertex\.obj' -- $(r nan_vertex_obj)
+check obj_relative_index 3 'relative_index_obj\.xml:[0-9]+: .*relative_index\.obj: line 2: relative face index -1' -- $(r relative_index_obj)
+check obj_corner_without_uv 3 'corner_without_uv\.obj: line 5: a face corner without a texture coordinate' -- $(r corner_without_uv_obj)
+check obj_long_line 3 'long_line\.obj: line 4: a line of 1102 characters' -- $(r long_line_obj)
 check obj_zero_area_triangles 0 'twinray: 8x8' -- $(r zero_area_obj)
 check missing_ply 3 'missing_ply\.xml:[0-9]+: .*missing\.ply' -- $(r missing_ply)
 check truncated_ply 3 'truncated_ply\.xml:[0-9]+: .*truncated\.ply' -- $(r truncated_ply)

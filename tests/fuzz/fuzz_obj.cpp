@@ -1,13 +1,13 @@
-// libFuzzer target: a Wavefront OBJ mesh through Assimp, as a scene's <shape type="obj">.
+// libFuzzer target: a Wavefront OBJ mesh through twinray's reader, as a scene's <shape type="obj">.
 #include <exception>
 
 #include "fuzz_input.h"
-#include "scenes/mesh.h"
+#include "scenes/obj_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   tr::fuzz::InputFile file(data, size, ".obj");
   try {
-    tr::load_mesh_file(file.path(), false);
+    tr::read_obj_file(file.path(), true, false);
   } catch (const std::exception&) {
   }
   return 0;

@@ -1,4 +1,4 @@
-// libFuzzer target: a PLY mesh through the checks and Assimp, as a scene's <shape type="ply">.
+// libFuzzer target: a PLY mesh through twinray's reader, as a scene's <shape type="ply">.
 #include <exception>
 
 #include "fuzz_input.h"
@@ -7,7 +7,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   tr::fuzz::InputFile file(data, size, ".ply");
   try {
-    tr::load_mesh_file(file.path(), false);
+    tr::load_ply_mesh(file.path(), false);
   } catch (const std::exception&) {
   }
   return 0;

@@ -40,7 +40,7 @@ std::string ply_header(const std::string& vertex_properties) {
 }
 
 TriangleMesh load_ply(const std::string& text) {
-  return load_mesh_file(write_file(fresh_dir(), "m.ply", text), false);
+  return load_ply_mesh(write_file(fresh_dir(), "m.ply", text), false);
 }
 
 TEST(PlyAttributes, VertexAndFacePropertiesAsMitsubaNamesThem) {
