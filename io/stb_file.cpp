@@ -40,25 +40,45 @@ Samples read_stb_samples(const std::string& path, const HeaderCheck& check) {
     fail_image(path, "the file's " + std::to_string(size) + " bytes cannot hold " +
                          std::to_string(s.width) + " x " + std::to_string(s.height) + " texels");
 
+  // Decoded through callbacks, which see whether the decoder asked for bytes past the end of
+  // the file (stb_image itself would go on with zeros).
+  struct Reader {
+    std::FILE* file;
+    bool past_end;
+  } reader{file.get(), false};
+  const stbi_io_callbacks callbacks = {
+      [](void* user, char* data, int size) {
+        auto* r = static_cast<Reader*>(user);
+        const size_t n = std::fread(data, 1, size_t(size), r->file);
+        if (n == 0) r->past_end = true;
+        return int(n);
+      },
+      [](void* user, int n) { std::fseek(static_cast<Reader*>(user)->file, n, SEEK_CUR); },
+      [](void* user) { return std::feof(static_cast<Reader*>(user)->file); }};
+
   int width = 0, height = 0, channels = 0;
   const size_t count = size_t(s.width) * s.height * s.channels;
   s.values.resize(count);
   auto decoded = [&](void* pixels) {
     if (!pixels) fail_image(path, std::string("cannot decode: ") + stbi_failure_reason());
-    if (width != s.width || height != s.height || channels != s.channels) {
+    const char* wrong = reader.past_end ? "the file ends inside its texels"
+                        : width != s.width || height != s.height || channels != s.channels
+                            ? "the image's size differs from its header's"
+                            : nullptr;
+    if (wrong) {
       stbi_image_free(pixels);
-      fail_image(path, "the image's size differs from its header's");
+      fail_image(path, wrong);
     }
     return pixels;
   };
   if (s.floating) {
     float* pixels = static_cast<float*>(
-        decoded(stbi_loadf_from_file(file.get(), &width, &height, &channels, 0)));
+        decoded(stbi_loadf_from_callbacks(&callbacks, &reader, &width, &height, &channels, 0)));
     std::copy(pixels, pixels + count, s.values.begin());
     stbi_image_free(pixels);
   } else {
     auto* pixels = static_cast<stbi_uc*>(
-        decoded(stbi_load_from_file(file.get(), &width, &height, &channels, 0)));
+        decoded(stbi_load_from_callbacks(&callbacks, &reader, &width, &height, &channels, 0)));
     for (size_t i = 0; i < count; ++i) s.values[i] = float(pixels[i]) * (1.0f / 255.0f);
     stbi_image_free(pixels);
   }

@@ -333,6 +333,45 @@ TEST(Texture, HeadersClaimingHugeImagesAreRefused) {
   }
 }
 
+// A BMP, a TGA and an RGBE file that end inside their texels are refused; stb_image alone would
+// read the missing bytes as zeros. Whole, they load to their texels.
+TEST(Texture, TruncatedStbImagesAreRefused) {
+  std::filesystem::path dir = fresh_dir();
+  auto le32 = [](uint32_t v) {
+    return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)};
+  };
+  // 2 x 2, 24 bits, rows bottom first and padded to 4 bytes: bottom row blue | green, top row
+  // red | white (BGR order).
+  std::string bmp = "BM" + le32(70) + le32(0) + le32(54) + le32(40) + le32(2) + le32(2) +
+                    std::string("\x01\x00\x18\x00", 4) + le32(0) + le32(16) + le32(2835) +
+                    le32(2835) + le32(0) + le32(0);
+  bmp += std::string("\xff\x00\x00\x00\xff\x00\x00\x00", 8);
+  bmp += std::string("\x00\x00\xff\xff\xff\xff\x00\x00", 8);
+  // 2 x 2 uncompressed true-colour TGA, rows top first (descriptor bit 5), BGR.
+  std::string tga("\x00\x00\x02\x00\x00\x00\x00\x00\x00\x00\x00\x00\x02\x00\x02\x00\x18\x20", 18);
+  tga += std::string("\x00\x00\xff\xff\xff\xff\xff\x00\x00\x00\xff\x00", 12);
+  // 2 x 2 RGBE, flat scanlines: red, white / blue, green at exponent 129 (values 1 or 0).
+  std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n";
+  hdr += std::string("\x80\x00\x00\x81\x80\x80\x80\x81\x00\x00\x80\x81\x00\x80\x00\x81", 16);
+  const std::pair<std::string, std::string> files[] = {
+      {"image.bmp", bmp}, {"image.tga", tga}, {"image.hdr", hdr}};
+  for (const auto& [name, file] : files) {
+    Image image = load_image(write_file(dir, name, file), true);
+    ASSERT_EQ(image.texels.size(), 4u) << name;
+    EXPECT_EQ(image.texels[0], glm::vec4(1, 0, 0, 1)) << name;
+    EXPECT_EQ(image.texels[1], glm::vec4(1, 1, 1, 1)) << name;
+    EXPECT_EQ(image.texels[2], glm::vec4(0, 0, 1, 1)) << name;
+    EXPECT_EQ(image.texels[3], glm::vec4(0, 1, 0, 1)) << name;
+    const std::string cut = write_file(dir, "cut_" + name, file.substr(0, file.size() - 5));
+    try {
+      load_image(cut, true);
+      ADD_FAILURE() << name << ": the truncated file was accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "cannot open image: the file ends inside its texels") << name;
+    }
+  }
+}
+
 // Found by scripts/fuzz: OpenEXR allocated an attribute's claimed 1.7 GB before failing.
 TEST(Texture, ExrAttributesLargerThanTheFileAreRefused) {
   std::filesystem::path dir = fresh_dir();
