@@ -2,10 +2,9 @@
 // (seed, pixel, sample index, dimension), so images do not depend on thread count, tiling or
 // dispatch order, and the GPU draws exactly the numbers the CPU draws.
 //
-// Hash: pcg4d, Jarzynski & Olano, "Hash Functions for GPU Rendering", JCGT 9(3) 2020, §2.4;
-// it passes TestU01 BigCrush as a 4D->4D hash. The dimension counter advances by one per
-// hash, which yields four 32-bit values; rng_next_1d uses the first, rng_next_2d the first
-// two, so consecutive calls never reuse a counter.
+// Hash: pcg4d (core/samplers/pcg4d.h). The dimension counter advances by one per hash, which yields
+// four 32-bit values; rng_next_1d uses the first, rng_next_2d the first two, so consecutive calls
+// never reuse a counter.
 //
 // The scene's sampler (Rng.sampler_params) decides what a draw is. `independent`: the hash's bits.
 // The stratified samplers (core/samplers/) split a pixel's samples into passes of
@@ -13,6 +12,8 @@
 // hash of (pixel, ~pass, dimension, seed) (~pass keeps it apart from the per-sample hashes of
 // the first 2^31 samples), and the per-sample hash supplies the jitter. A 2D draw is one 2D
 // point of the sampler, so 1D and 2D draws consume the dimension counter as `independent`.
+// `zsobol` (core/samplers/zsobol.h) correlates the pixels instead: its permutations and
+// scrambles are fixed per (pass, dimension, seed) for the whole image.
 #ifndef TWINRAY_CORE_RNG_H
 #define TWINRAY_CORE_RNG_H
 
@@ -20,6 +21,7 @@
 #include "core/samplers/multijitter.h"
 #include "core/samplers/orthogonal.h"
 #include "core/samplers/stratified.h"
+#include "core/samplers/zsobol.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -30,20 +32,6 @@ struct Rng {
   uint dimension;  // next counter value
   Sampler sampler_params;
 };
-
-INLINE uvec4 pcg4d(uvec4 v) {
-  v = v * 1664525u + 1013904223u;
-  v.x += v.y * v.w;
-  v.y += v.z * v.x;
-  v.z += v.x * v.y;
-  v.w += v.y * v.z;
-  v = v ^ (v >> 16u);
-  v.x += v.y * v.w;
-  v.y += v.z * v.x;
-  v.z += v.x * v.y;
-  v.w += v.y * v.z;
-  return v;
-}
 
 INLINE Rng rng_init(uint pixel, uint sample_index, uint seed) {
   Rng r;
@@ -90,6 +78,17 @@ INLINE uint rng_row_permutation(Rng r) {
 
 INLINE uint rng_index_in_pass(Rng r) { return r.sample_index % r.sampler_params.sample_count; }
 
+// zsobol: the key of the current (pass, dimension, seed), shared by every pixel.
+INLINE uvec4 rng_zsobol_key(Rng r) {
+  uint pass = r.sample_index / r.sampler_params.sample_count;
+  return pcg4d(uvec4(0x9e3779b9u, ~pass, r.dimension, r.seed));
+}
+
+INLINE uvec2 rng_pixel_xy(Rng r) {
+  uint y = r.pixel / r.sampler_params.resolution.x;
+  return uvec2(r.pixel - y * r.sampler_params.resolution.x, y);
+}
+
 INLINE float rng_next_1d(INOUT(Rng) r) {
   uint type = r.sampler_params.type;
   if ((TR_HAS_SAMPLER(SAMPLER_STRATIFIED) && type == SAMPLER_STRATIFIED) ||
@@ -111,6 +110,12 @@ INLINE float rng_next_1d(INOUT(Rng) r) {
     uint index = rng_index_in_pass(r);
     r.dimension += 1u;
     return ldsampler_1d(r.sampler_params, index, pass_bits.x, pass_bits.y);
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
+    uvec4 key = rng_zsobol_key(r);
+    uvec2 xy = rng_pixel_xy(r);
+    r.dimension += 1u;
+    return zsobol_1d(r.sampler_params, xy.x, xy.y, rng_index_in_pass(r), key);
   }
   return rng_to_unit_float(rng_next_bits(r).x);
 }
@@ -144,6 +149,12 @@ INLINE vec2 rng_next_2d(INOUT(Rng) r) {
     uint index = rng_index_in_pass(r);
     r.dimension += 1u;
     return ldsampler_2d(r.sampler_params, index, pass_bits.x, uvec2(pass_bits.y, pass_bits.z));
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
+    uvec4 key = rng_zsobol_key(r);
+    uvec2 xy = rng_pixel_xy(r);
+    r.dimension += 1u;
+    return zsobol_2d(r.sampler_params, xy.x, xy.y, rng_index_in_pass(r), key);
   }
   uvec4 h = rng_next_bits(r);
   return vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));

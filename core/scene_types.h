@@ -232,6 +232,7 @@ const uint SAMPLER_STRATIFIED = 1u;   // core/samplers/stratified.h
 const uint SAMPLER_LDSAMPLER = 2u;    // core/samplers/ldsampler.h
 const uint SAMPLER_MULTIJITTER = 3u;  // core/samplers/multijitter.h
 const uint SAMPLER_ORTHOGONAL = 4u;   // core/samplers/orthogonal.h
+const uint SAMPLER_ZSOBOL = 5u;       // core/samplers/zsobol.h
 
 // The scene's sampler. A pixel's samples come in passes of sample_count: within a pass each
 // dimension's points are stratified (Mitsuba semantics, after its sample_count rounding).
@@ -239,7 +240,8 @@ struct Sampler {
   uint type;          // SAMPLER_*
   uint sample_count;  // points of one pass (rounded as Mitsuba rounds it); independent: 1
   uvec2 resolution;   // stratified: sqrt(sample_count) twice; multijitter: its grid;
-                      // orthogonal: the prime p twice
+                      // orthogonal: the prime p twice; zsobol: the film's width and the base-4
+                      // digits of its Morton indices
   uint jitter;        // stratified, multijitter, orthogonal: 1 to jitter within strata, 0 for
                       // their centers
   float inv_sample_count;

@@ -229,7 +229,7 @@ void SceneBuilder::add_sensor(Node& s) {
   uint sampler_type;
   if (!sampler_type_of(sampler.type, sampler_type))
     fail(sampler.loc, "unknown sampler type \"", sampler.type,
-         "\" (supported: independent, stratified, ldsampler, multijitter, orthogonal)");
+         "\" (supported: independent, stratified, ldsampler, multijitter, orthogonal, zsobol)");
   long long spp = take_integer(sampler, "sample_count", 4), seed = take_integer(sampler, "seed", 0);
   if (spp <= 0 || spp > 0xffffffffLL)
     fail(sampler.loc, describe(sampler), ": sample_count must be positive");

@@ -106,7 +106,7 @@ const Entry TABLE[] = {
     {"sampler", "ldsampler", PluginSupport::Supported, ""},
     // twinray samplers beyond Mitsuba (pbrt-v4's), named by the samplers issue
     {"sampler", "sobol", PluginSupport::Planned, SAMPLERS_ISSUE},
-    {"sampler", "zsobol", PluginSupport::Planned, SAMPLERS_ISSUE},
+    {"sampler", "zsobol", PluginSupport::Supported, ""},
     // integrators
     {"integrator", "path", PluginSupport::Supported, ""},
     {"integrator", "direct", PluginSupport::Supported, ""},

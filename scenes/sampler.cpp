@@ -1,5 +1,6 @@
 #include "scenes/sampler.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -11,8 +12,8 @@ namespace {
 const std::uint64_t MAX_PASS = 1u << 24;  // pass indices stay exact in float (core/samplers/)
 
 // Mitsuba's plugin names, by SAMPLER_*.
-const std::array<const char*, 5> SAMPLER_NAMES = {"independent", "stratified", "ldsampler",
-                                                  "multijitter", "orthogonal"};
+const std::array<const char*, 6> SAMPLER_NAMES = {"independent", "stratified", "ldsampler",
+                                                  "multijitter", "orthogonal", "zsobol"};
 
 std::uint64_t smallest_prime_at_least(std::uint64_t x) {
   for (;; ++x) {
@@ -49,6 +50,10 @@ uint rounded_sample_count(uint type, uint requested) {
     std::uint64_t p = smallest_prime_at_least(2);
     while (p * p < n) p = smallest_prime_at_least(p + 1);
     n = p * p;
+  } else if (type == SAMPLER_ZSOBOL) {
+    std::uint64_t r = 1;
+    while (r < n) r *= 2;
+    n = r;
   } else if (type == SAMPLER_MULTIJITTER) {
     std::uint64_t rows = std::uint64_t(std::sqrt(float(requested)));  // as Mitsuba, in float
     n = (n + rows - 1) / rows * rows;
@@ -74,6 +79,13 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
   } else if (type == SAMPLER_MULTIJITTER) {
     uint rows = uint(std::sqrt(float(requested)));
     s.resolution = uvec2(n / rows, rows);
+  } else if (type == SAMPLER_ZSOBOL) {
+    // pbrt-v4: log2 of the film's larger side rounded up to a power of 2, plus ceil(log4 n).
+    const Camera& c = scene.buffers.globals.camera;
+    uint log2_side = 0, log2_n = 0;
+    while ((1u << log2_side) < std::max(c.width, c.height)) ++log2_side;
+    while ((1u << log2_n) < n) ++log2_n;
+    s.resolution = uvec2(c.width, log2_side + (log2_n + 1) / 2);
   }
   s.inv_sample_count = 1.0f / float(s.sample_count);
   s.inv_resolution = vec2(1.0f) / vec2(s.resolution);
@@ -82,7 +94,7 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
   if (n != requested)
     scene.sample_count_note = std::string(sampler_name(type)) + ": sample_count " +
                               std::to_string(requested) + " rounded up to " + std::to_string(n) +
-                              ", as Mitsuba";
+                              (type == SAMPLER_ZSOBOL ? ", as pbrt-v4" : ", as Mitsuba");
 }
 
 void set_sample_count(Scene& scene, uint requested) {

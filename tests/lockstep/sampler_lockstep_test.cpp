@@ -1,9 +1,10 @@
-// CPU <-> GPU lockstep of the stratified samplers (issue 11): the Cornell box (48x48) with each
-// sampler at 16 spp (orthogonal: 25), so that every draw of the path goes through core/samplers/ on
-// both sides. Without jitter the points sit at strata centers, symmetric in x and y, so on the
-// Cornell box the camera rays of pixels on the image diagonals hit the diagonal edges of its quads
-// exactly and Embree and the GPU split those ties differently (1.9% of the pixels): that case
-// renders the textured_diffuse scene of the Mitsuba suite instead.
+// CPU <-> GPU lockstep of the stratified samplers and zsobol (issue 11): the Cornell box
+// (48x48) with each sampler at 16 spp (orthogonal: 25), so that every draw of the path goes
+// through core/samplers/ on both sides. Without jitter the points sit at strata centers,
+// symmetric in x and y, so on the Cornell box the camera rays of pixels on the image diagonals
+// hit the diagonal edges of its quads exactly and Embree and the GPU split those ties
+// differently (1.9% of the pixels): that case renders the textured_diffuse scene of the Mitsuba
+// suite instead.
 #include <gtest/gtest.h>
 
 #include "lockstep_check.h"
@@ -43,6 +44,7 @@ TEST(SamplerLockstep, Orthogonal) {  // 16 spp rounds up to 25 (5^2)
 TEST(SamplerLockstep, Multijitter) {
   expect_lockstep("multijitter", cornell_box(SAMPLER_MULTIJITTER), 16, 34);
 }
+TEST(SamplerLockstep, Zsobol) { expect_lockstep("zsobol", cornell_box(SAMPLER_ZSOBOL), 16, 36); }
 
 }  // namespace
 }  // namespace tr

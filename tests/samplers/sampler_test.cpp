@@ -1,6 +1,7 @@
 // The stratified samplers (core/samplers/, drawn through core/rng.h): Mitsuba's sample_count
-// rounding, each sampler's stratification property within a pass, chi-square uniformity of
-// the marginal 1D and 2D distributions, and faster convergence than `independent`.
+// rounding (zsobol: pbrt-v4's), each sampler's stratification property within a pass,
+// chi-square uniformity of the marginal 1D and 2D distributions, and faster convergence than
+// `independent`.
 #include "scenes/sampler.h"
 
 #include <gtest/gtest.h>
@@ -17,8 +18,11 @@
 namespace tr {
 namespace {
 
+// A film of 640 x 480 (zsobol orders its pixels).
 Sampler make(uint type, uint requested, bool jitter = true) {
   Scene scene;
+  scene.buffers.globals.camera.width = 640;
+  scene.buffers.globals.camera.height = 480;
   set_sampler(scene, type, requested, jitter);
   return scene.buffers.globals.sampler_params;
 }
@@ -36,7 +40,10 @@ vec2 draw_2d(const Sampler& s, uint pixel, uint index, uint seed, uint dimension
 }
 
 const uint kStratifiedTypes[] = {SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER,
-                                 SAMPLER_ORTHOGONAL};
+                                 SAMPLER_ORTHOGONAL, SAMPLER_ZSOBOL};
+
+// zsobol's pixels share one randomization: its independent randomizations are seeds.
+bool randomized_by_seed(const Sampler& s) { return s.type == SAMPLER_ZSOBOL; }
 
 TEST(Permute, IsABijectionForAnyLength) {
   for (uint n : {1u, 2u, 3u, 5u, 16u, 17u, 100u, 256u, 1000u, 4097u})
@@ -68,7 +75,8 @@ TEST(SampleCount, RoundsAsMitsuba) {
       {SAMPLER_MULTIJITTER, 16, 16},  {SAMPLER_ORTHOGONAL, 1, 4},     // the smallest prime is 2
       {SAMPLER_ORTHOGONAL, 5, 9},     {SAMPLER_ORTHOGONAL, 10, 25},   // 4 is not prime
       {SAMPLER_ORTHOGONAL, 16, 25},   {SAMPLER_ORTHOGONAL, 50, 121},  // 8, 9 and 10 are not prime
-      {SAMPLER_ORTHOGONAL, 289, 289},
+      {SAMPLER_ORTHOGONAL, 289, 289}, {SAMPLER_ZSOBOL, 1, 1},          {SAMPLER_ZSOBOL, 3, 4},
+      {SAMPLER_ZSOBOL, 16, 16},       {SAMPLER_ZSOBOL, 17, 32},  // pbrt-v4: powers of 2
   };
   for (const Rounding& r : table)
     EXPECT_EQ(rounded_sample_count(r.type, r.requested), r.rendered)
@@ -90,6 +98,14 @@ TEST(SampleCount, SaysWhenItRounds) {
   set_sampler(scene, SAMPLER_MULTIJITTER, 10, false);
   EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(4u, 3u));
   EXPECT_EQ(scene.buffers.globals.sampler_params.jitter, 0u);
+  scene.buffers.globals.camera.width = 300;
+  scene.buffers.globals.camera.height = 520;
+  set_sampler(scene, SAMPLER_ZSOBOL, 10, true);
+  EXPECT_EQ(scene.sample_count_note, "zsobol: sample_count 10 rounded up to 16, as pbrt-v4");
+  // width, log2 of 1024 (520 rounded up to a power of 2) + log4 of 16
+  EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(300u, 12u));
+  set_sample_count(scene, 32);
+  EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(300u, 13u)) << "ceil(log4 32)";
 }
 
 TEST(Independent, DrawsTheHashAsBefore) {
@@ -127,7 +143,7 @@ void expect_stratified(uint type, uint requested, bool jitter) {
           points.push_back(p);
           columns.insert(uint(p.x * float(n)));
           rows.insert(uint(p.y * float(n)));
-          if (type != SAMPLER_LDSAMPLER)
+          if (type != SAMPLER_LDSAMPLER && type != SAMPLER_ZSOBOL)
             cells.insert(uint(p.y * float(res.y)) * res.x + uint(p.x * float(res.x)));
         }
         EXPECT_EQ(strata_1d.size(), n) << "1D: one point per stratum of 1/n";
@@ -139,7 +155,7 @@ void expect_stratified(uint type, uint requested, bool jitter) {
           EXPECT_EQ(columns.size(), n) << "n-rooks: one point per column 1/n wide";
           EXPECT_EQ(rows.size(), n) << "n-rooks: one point per row 1/n high";
         }
-        if (type == SAMPLER_LDSAMPLER) {
+        if (type == SAMPLER_LDSAMPLER || type == SAMPLER_ZSOBOL) {
           // (0, m, 2)-net in base 2, n = 2^m: every elementary interval 2^-a x 2^-(m - a).
           uint m = 0;
           while ((1u << m) < n) ++m;
@@ -192,6 +208,36 @@ TEST(Stratification, Multijitter) {
   }
 }
 
+TEST(Stratification, Zsobol) {
+  for (uint requested : {1u, 2u, 8u, 16u, 32u, 256u, 1024u})
+    expect_stratified(SAMPLER_ZSOBOL, requested, true);
+}
+
+// zsobol spreads the error as blue noise: the pixels of an aligned 2^k x 2^k block of the film
+// hold consecutive blocks of one sequence, so their first samples (one per pixel) together are
+// a (0, 2k, 2)-net, at every dimension.
+TEST(Stratification, ZsobolNeighbouringPixelsTogether) {
+  Sampler s = make(SAMPLER_ZSOBOL, 1);
+  for (uint k : {1u, 2u, 3u})
+    for (uvec2 corner : {uvec2(0u), uvec2(8u, 16u), uvec2(600u, 472u)})
+      for (uint dim : {0u, 1u, 9u}) {
+        const uint side = 1u << k, m = 2u * k;
+        std::vector<vec2> points;
+        for (uint y = 0; y < side; ++y)
+          for (uint x = 0; x < side; ++x)
+            points.push_back(draw_2d(s, (corner.y + y) * 640u + corner.x + x, 0u, 5u, dim));
+        for (uint a = 0; a <= m; ++a) {
+          std::set<uint> intervals;
+          for (vec2 p : points)
+            intervals.insert((uint(p.x * float(1u << a)) << (m - a)) |
+                             uint(p.y * float(1u << (m - a))));
+          EXPECT_EQ(intervals.size(), points.size())
+              << "block " << side << " at " << corner.x << ", " << corner.y << " dim " << dim
+              << ": elementary intervals 2^-" << a << " x 2^-" << m - a;
+        }
+      }
+}
+
 TEST(Stratification, Orthogonal) {
   for (uint requested : {4u, 9u, 25u, 49u, 121u, 289u}) {
     expect_stratified(SAMPLER_ORTHOGONAL, requested, true);
@@ -212,16 +258,17 @@ struct UniformityCase {
 };
 
 // p-values of the 1D draw, the 2D draw and a pair of consecutive 1D draws of sample `index` at
-// dimension `dimension`, over 200000 pixels.
+// dimension `dimension`, over 200000 pixels (zsobol: 200000 seeds of pixel 4711).
 std::array<double, 3> uniformity_p_values(const Sampler& s, uint index, uint dimension) {
   const uint kPixels = 200000, kBins1d = 100, kBins2d = 20;
   std::vector<double> h1(kBins1d, 0.0), h2(kBins2d * kBins2d, 0.0), hpair(kBins2d * kBins2d, 0.0);
-  for (uint pixel = 0; pixel < kPixels; ++pixel) {
-    float x = draw_1d(s, pixel, index, 17u, dimension);
+  for (uint k = 0; k < kPixels; ++k) {
+    const uint pixel = randomized_by_seed(s) ? 4711u : k, seed = randomized_by_seed(s) ? k : 17u;
+    float x = draw_1d(s, pixel, index, seed, dimension);
     h1[uint(x * kBins1d)] += 1.0;
-    vec2 p = draw_2d(s, pixel, index, 17u, dimension);
+    vec2 p = draw_2d(s, pixel, index, seed, dimension);
     h2[uint(p.y * kBins2d) * kBins2d + uint(p.x * kBins2d)] += 1.0;
-    Rng r = rng_init_sampler(pixel, index, 17u, s);
+    Rng r = rng_init_sampler(pixel, index, seed, s);
     r.dimension = dimension;
     float u = rng_next_1d(r), v = rng_next_1d(r);
     hpair[uint(v * kBins2d) * kBins2d + uint(u * kBins2d)] += 1.0;
@@ -261,22 +308,23 @@ TEST(Uniformity, CatchesPointsAtStrataCenters) {
 }
 
 // RMSE of the mean of a smooth integrand over one pass of 256 samples (orthogonal: 289 =
-// 17^2), over 200 pixels (independent randomizations): a stratified sampler's error falls
-// faster than 1/sqrt(N), so it must be far below `independent`'s at 256 samples (measured
-// ratios 0.003 to 0.09; asserted: below 0.5).
-double rmse(const Sampler& s, bool two_d) {
-  const uint n = s.sample_count, kPixels = 200;
+// 17^2), over 200 pixels (independent randomizations; zsobol: 200 seeds): a stratified sampler's
+// error falls faster than 1/sqrt(N), so it must be far below `independent`'s at 256 samples
+// (measured ratios 0.003 to 0.09; asserted: below 0.5).
+double rmse(const Sampler& s, uint n, bool two_d) {
+  const uint kPixels = 200;
   // Integrands and their exact integrals over [0,1) and [0,1)^2.
   const double exact_1d = 1.0 - std::cos(1.0), exact_2d = (std::exp(1.0) - 1.0) * 0.5;
   double sum_sq = 0.0;
-  for (uint pixel = 0; pixel < kPixels; ++pixel) {
+  for (uint k = 0; k < kPixels; ++k) {
+    const uint pixel = randomized_by_seed(s) ? 4711u : k, seed = randomized_by_seed(s) ? k : 3u;
     double mean = 0.0;
     for (uint i = 0; i < n; ++i) {
       if (two_d) {
-        vec2 p = draw_2d(s, pixel, i, 3u, 2u);
+        vec2 p = draw_2d(s, pixel, i, seed, 2u);
         mean += std::exp(double(p.x)) * double(p.y);
       } else {
-        mean += std::sin(double(draw_1d(s, pixel, i, 3u, 2u)));
+        mean += std::sin(double(draw_1d(s, pixel, i, seed, 2u)));
       }
     }
     mean /= n;
@@ -288,9 +336,11 @@ double rmse(const Sampler& s, bool two_d) {
 
 TEST(Convergence, FasterThanIndependent) {
   for (bool two_d : {false, true}) {
-    double independent = rmse(make(SAMPLER_INDEPENDENT, 256), two_d);
+    // independent's record has no passes (sample_count 1): its 256 samples are named here.
+    double independent = rmse(make(SAMPLER_INDEPENDENT, 256), 256, two_d);
     for (uint type : kStratifiedTypes) {
-      double r = rmse(make(type, 256), two_d);
+      const Sampler s = make(type, 256);
+      double r = rmse(s, s.sample_count, two_d);
       EXPECT_LT(r, 0.5 * independent)
           << "type " << type << (two_d ? " 2D" : " 1D") << " RMSE " << r << " vs " << independent;
       std::printf("type %u %s: RMSE %.3g, independent %.3g\n", type, two_d ? "2D" : "1D", r,
