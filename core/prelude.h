@@ -23,6 +23,9 @@
 TR_NAMESPACE_BEGIN
 using namespace glm;
 using uint = std::uint32_t;
+// GLSL's findMSB of a uint through the compiler's intrinsic (GLM's generic version costs about
+// as much as a zsobol draw's digit permutations, core/samplers/zsobol.h).
+inline int findMSB(uint x) { return x == 0u ? -1 : 31 - __builtin_clz(x); }
 TR_NAMESPACE_END
 
 #else  // GLSL

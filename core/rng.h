@@ -2,9 +2,10 @@
 // (seed, pixel, sample index, dimension), so images do not depend on thread count, tiling or
 // dispatch order, and the GPU draws exactly the numbers the CPU draws.
 //
-// Hash: pcg4d (core/samplers/pcg4d.h). The dimension counter advances by one per hash, which yields
-// four 32-bit values; rng_next_1d uses the first, rng_next_2d the first two, so consecutive calls
-// never reuse a counter.
+// Hash: pcg4d, Jarzynski & Olano, "Hash Functions for GPU Rendering", JCGT 9(3) 2020, §2.4;
+// it passes TestU01 BigCrush as a 4D->4D hash. The dimension counter advances by one per
+// hash, which yields four 32-bit values; rng_next_1d uses the first, rng_next_2d the first
+// two, so consecutive calls never reuse a counter.
 //
 // The scene's sampler (Rng.sampler_params) decides what a draw is. `independent`: the hash's bits.
 // The stratified samplers (core/samplers/) split a pixel's samples into passes of
@@ -32,6 +33,20 @@ struct Rng {
   uint dimension;  // next counter value
   Sampler sampler_params;
 };
+
+INLINE uvec4 pcg4d(uvec4 v) {
+  v = v * 1664525u + 1013904223u;
+  v.x += v.y * v.w;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v.w += v.y * v.z;
+  v = v ^ (v >> 16u);
+  v.x += v.y * v.w;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v.w += v.y * v.z;
+  return v;
+}
 
 INLINE Rng rng_init(uint pixel, uint sample_index, uint seed) {
   Rng r;

@@ -24,17 +24,20 @@ INLINE uint van_der_corput_bits(uint i) {
 }
 
 // Sobol's second dimension as 32 fixed-point bits: generator matrix rows v_{j+1} = v_j ^
-// (v_j >> 1) from v_0 = 2^31 (Pascal's matrix mod 2; Kollig & Keller 2002, §2).
-INLINE uint sobol_2_bits(uint i) {
-  uint v = 0x80000000u;
-  uint result = 0u;
-  while (i != 0u) {
-    if ((i & 1u) != 0u) result ^= v;
-    i >>= 1u;
-    v ^= v >> 1u;
-  }
-  return result;
+// (v_j >> 1) from v_0 = 2^31 (Pascal's matrix mod 2; Kollig & Keller 2002, §2). Bit 31 - k of
+// the result is the XOR of the bits j of i with C(j, k) odd, i.e. (Lucas's theorem) with the
+// bits of k a subset of those of j: a superset transform over the 5 bits of the index, here
+// with the bits still reversed (bit k).
+INLINE uint sobol_2_reversed_bits(uint i) {
+  i ^= (i >> 1u) & 0x55555555u;
+  i ^= (i >> 2u) & 0x33333333u;
+  i ^= (i >> 4u) & 0x0f0f0f0fu;
+  i ^= (i >> 8u) & 0x00ff00ffu;
+  i ^= (i >> 16u) & 0x0000ffffu;
+  return i;
 }
+
+INLINE uint sobol_2_bits(uint i) { return van_der_corput_bits(sobol_2_reversed_bits(i)); }
 
 INLINE float ld_bits_to_float(uint bits) { return float(bits >> 8u) * 5.9604645e-08f; }
 

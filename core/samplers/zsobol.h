@@ -22,7 +22,6 @@
 #define TWINRAY_CORE_SAMPLERS_ZSOBOL_H
 
 #include "core/samplers/ldsampler.h"
-#include "core/samplers/pcg4d.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -43,69 +42,85 @@ INLINE uint zsobol_spread_bits(uint v) {
   return v;
 }
 
-// The image of `digit` under permutation p of {0, 1, 2, 3}, p in [0, 24) read as a Lehmer code
-// (factorial digits p / 6, p / 2 % 3, p % 2): every permutation once.
-INLINE uint zsobol_permute_digit(uint p, uint digit) {
-  uint remaining = 0x3210u;  // the values not yet placed, 4 bits each, in increasing order
-  uint value = 0u;
-  for (uint k = 0u; k <= digit; ++k) {
-    uint choice = k == 0u ? p / 6u : (k == 1u ? p / 2u % 3u : (k == 2u ? p % 2u : 0u));
-    uint shift = 4u * choice;
-    value = (remaining >> shift) & 0xfu;
-    uint below = remaining & ((1u << shift) - 1u);
-    remaining = below | ((remaining >> (shift + 4u)) << shift);
-  }
-  return value;
+// The image of `digit` under one of the 24 permutations of {0, 1, 2, 3}, chosen by the hash h.
+// The permutations of the four 2-bit digits are exactly the affine maps x -> A x + c over
+// GF(2)^2 (A one of the 6 invertible 2 x 2 binary matrices, c one of 4 shifts: 24 maps, all
+// distinct): h's top 2 bits give c, its low 16 bits A (as floor(6 (h mod 2^16) / 2^16), which
+// favours none by more than 6 / 2^16). ZSOBOL_MATRICES holds, 4 bits each (A 1 | A 2 << 2, A 0
+// lowest), the images of 1 and 2 under each A: (1,2) (1,3) (2,1) (2,3) (3,1) (3,2).
+const uint ZSOBOL_MATRICES = 0xb7e6d9u;
+INLINE uint zsobol_permute_digit(uint h, uint digit) {
+  uint a = (ZSOBOL_MATRICES >> (4u * (((h & 0xffffu) * 6u) >> 16u))) & 0xfu;
+  uint image = ((digit & 1u) != 0u ? a & 3u : 0u) ^ ((digit & 2u) != 0u ? a >> 2u : 0u);
+  return image ^ (h >> 30u);
 }
 
-// pbrt-v4's FastOwenScrambler: a hash of the reversed bits whose every output bit depends only
-// on the input bits above it, i.e. a nested random permutation of the elementary intervals.
-INLINE uint zsobol_owen_scramble(uint v, uint seed) {
-  v = van_der_corput_bits(v);
+// pbrt-v4's FastOwenScrambler without its bit reversals: on the reversed bits of a
+// fixed-point value, a hash whose every output bit depends only on the input bits below it,
+// i.e. a nested random permutation of the elementary intervals (an Owen scramble).
+INLINE uint zsobol_owen_hash(uint reversed, uint seed) {
+  uint v = reversed;
   v ^= v * 0x3d20adeau;
   v += seed;
   v *= (seed >> 16u) | 1u;
   v ^= v * 0x05526c56u;
   v ^= v * 0x53a22864u;
-  return van_der_corput_bits(v);
+  return v;
 }
 
-// The Sobol index of `index` (in [0, n)) of pixel (x, y), permuted for the dimension's key (its
-// last two words). Only the low 32 bits are formed: the two Sobol dimensions used resolve 32
-// bits, the digits above change no coordinate.
+// lowbias32, a 32-bit integer hash of low bias found by search (Wellons, "Prospecting for Hash
+// Functions", 2018).
+INLINE uint zsobol_mix(uint h) {
+  h ^= h >> 16u;
+  h *= 0x7feb352du;
+  h ^= h >> 15u;
+  h *= 0x846ca68bu;
+  h ^= h >> 16u;
+  return h;
+}
+
+// The hash that permutes the digit below `higher` (the digits above it) for the dimension's
+// key.
+INLINE uint zsobol_digit_hash(uvec2 higher, uvec4 key) {
+  return zsobol_mix(((higher.x ^ key.z) * 0x9e3779b9u + key.w) ^ (higher.y * 0x85ebca6bu));
+}
+
+// The Sobol index of `index` (in [0, n)) of pixel (x, y), its digits permuted for the
+// dimension's key (its last two words). Only the low 32 bits are formed: the two Sobol
+// dimensions used resolve 32 bits, the digits above change no coordinate. Each digit's hash
+// depends on the digits above it alone, so the digits are permuted independently of each other
+// (no chain from one to the next).
 INLINE uint zsobol_sobol_index(Sampler s, uint x, uint y, uint index, uvec4 key) {
   uint log2n = uint(findMSB(s.sample_count));
   uint morton = (zsobol_spread_bits(y) << 1u) | zsobol_spread_bits(x);
   uvec2 m = uvec2((log2n < 32u ? morton << log2n : 0u) | index,
                   log2n == 0u ? 0u : morton >> (32u - log2n));
   uint odd = log2n & 1u;
-  uint digits = s.resolution.y;
   uint result = 0u;
-  for (uint i = min(digits, 16u + odd); i > odd; --i) {
+  for (uint i = min(s.resolution.y, 16u + odd); i > odd; --i) {
     uint shift = 2u * (i - 1u) - odd;
-    uint digit = zsobol_shift_right(m, shift).x & 3u;
-    uvec2 higher = zsobol_shift_right(m, shift + 2u);
-    uint p = pcg4d(uvec4(higher.x, higher.y, key.z, key.w)).x % 24u;
-    result |= zsobol_permute_digit(p, digit) << shift;
+    // Films up to 2^(16 - log2(n) / 2) pixels a side keep m within 32 bits.
+    uvec2 higher = m.y == 0u ? uvec2((m.x >> shift) >> 2u, 0u) : zsobol_shift_right(m, shift + 2u);
+    uint digit = (m.y == 0u ? m.x >> shift : zsobol_shift_right(m, shift).x) & 3u;
+    result |= zsobol_permute_digit(zsobol_digit_hash(higher, key), digit) << shift;
   }
-  if (odd != 0u) {
-    uvec2 higher = zsobol_shift_right(m, 1u);
-    result |= (m.x & 1u) ^ (pcg4d(uvec4(higher.x, higher.y, key.z, key.w)).x & 1u);
-  }
+  if (odd != 0u) result |= (m.x ^ zsobol_digit_hash(zsobol_shift_right(m, 1u), key)) & 1u;
   return result;
 }
 
 // key: pcg4d of (dimension, pass, seed) — x and y scramble the two coordinates, z and w choose
-// the digit permutations.
+// the digit permutations. The scrambler works on reversed bits: those of the van der Corput
+// point are the index itself.
 INLINE float zsobol_1d(Sampler s, uint x, uint y, uint index, uvec4 key) {
   uint i = zsobol_sobol_index(s, x, y, index, key);
-  return ld_bits_to_float(zsobol_owen_scramble(van_der_corput_bits(i), key.x));
+  return ld_bits_to_float(van_der_corput_bits(zsobol_owen_hash(i, key.x)));
 }
 
 INLINE vec2 zsobol_2d(Sampler s, uint x, uint y, uint index, uvec4 key) {
   uint i = zsobol_sobol_index(s, x, y, index, key);
-  return vec2(ld_bits_to_float(zsobol_owen_scramble(van_der_corput_bits(i), key.x)),
-              ld_bits_to_float(zsobol_owen_scramble(sobol_2_bits(i), key.y)));
+  uint sx = zsobol_owen_hash(i, key.x);
+  uint sy = zsobol_owen_hash(sobol_2_reversed_bits(i), key.y);
+  return vec2(ld_bits_to_float(van_der_corput_bits(sx)), ld_bits_to_float(van_der_corput_bits(sy)));
 }
 
 TR_NAMESPACE_END
