@@ -372,6 +372,21 @@ TEST(Texture, TruncatedStbImagesAreRefused) {
   }
 }
 
+// Found by scripts/fuzz: libpng allocated the 2 GB a tEXt chunk's length claimed in a 370-byte
+// file before finding the file too short.
+TEST(Texture, PngChunksLongerThanTheFileAreRefused) {
+  const std::string path =
+      std::string(TWINRAY_SOURCE_DIR) + "/tests/fuzz/corpus/regression_png_chunk_length.png";
+  try {
+    load_image(path, false);
+    FAIL() << "the image was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "cannot open image: a PNG chunk claims 2097191424 bytes, the file has "
+                 "180 left");
+  }
+}
+
 // Found by scripts/fuzz: OpenEXR allocated an attribute's claimed 1.7 GB before failing.
 TEST(Texture, ExrAttributesLargerThanTheFileAreRefused) {
   std::filesystem::path dir = fresh_dir();
