@@ -87,8 +87,8 @@ const TriangleMesh& SceneBuilder::mesh_file(Node& n, bool face_normals) {
     auto cached = mesh_cache_.find(key);
     if (cached != mesh_cache_.end()) return cached->second;
     try {
-      TriangleMesh mesh = obj ? read_obj_file(path, flip_tex, face_normals)
-                              : load_ply_mesh(path, flip_tex);
+      TriangleMesh mesh =
+          obj ? read_obj_file(path, flip_tex, face_normals) : load_ply_mesh(path, flip_tex);
       return mesh_cache_.emplace(key, std::move(mesh)).first->second;
     } catch (const std::exception& e) {
       fail(file_loc, path, ": ", e.what());

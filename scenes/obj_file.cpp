@@ -157,9 +157,8 @@ class ObjReader {
                                    " in a file that has them (Mitsuba would read "
                                    "uninitialized memory)");
     if (index > count)
-      fail(key_lines_[vertex], std::string("reference to ") + what + " " +
-                                   std::to_string(index) + ", but the file has " +
-                                   std::to_string(count));
+      fail(key_lines_[vertex], std::string("reference to ") + what + " " + std::to_string(index) +
+                                   ", but the file has " + std::to_string(count));
     return index - 1;
   }
 

@@ -1,11 +1,12 @@
 // The OBJ reader against the semantics of Mitsuba 3's `obj` shape (src/shapes/obj.cpp): which
 // lines it reads, how corners become vertices and faces become triangles, and what it refuses.
+#include "scenes/obj_file.h"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
 #include "scene_test_files.h"
-#include "scenes/obj_file.h"
 
 namespace tr {
 namespace {
