@@ -13,6 +13,7 @@
 #include "app/run_backend.h"
 #include "io/temp_file.h"
 #include "scenes/load_scene.h"
+#include "scenes/sampler.h"
 #include "validation/harness/scene_render.h"
 #include "validation/harness/variant.h"
 #include "validation/image/convergence.h"
@@ -27,7 +28,8 @@ const char* kUsage =
     R"(usage: twinray converge SCENE.xml --reference REF.exr --budget SECONDS [options]
 
 For each variant, renders SCENE at start-spp, 2 start-spp, 4 start-spp, ... (a fresh render
-each, seeds seed, seed+1, ...) until the variant's time budget is spent or the next render
+each, seeds seed, seed+1, ..., the sampler's sample_count set to the rung's spp and rounded
+as the sampler rounds it) until the variant's time budget is spent or the next render
 would overrun it (its time predicted as twice the last), and records the render time, RMSE
 and relMSE against REF (validation/image/metrics.h). Writes OUT/convergence.csv,
 OUT/convergence.svg (log-log RMSE and relMSE against seconds) and OUT/time_to_error.csv, and
@@ -37,7 +39,7 @@ Options:
   --variant SPEC     a render variant, comma-separated KEY=VALUE (may repeat; default: the
                      scene as written, on the CPU):
                        integrator=path|direct  max_depth=N (-1 unbounded)  rr_depth=N|off
-                       backend=cpu|gpu         label=TEXT
+                       sampler=NAME            backend=cpu|gpu  label=TEXT
                      e.g. --variant max_depth=3 --variant rr_depth=off,label=no-RR
   --budget SECONDS   time budget of each variant (required)
   --start-spp N      first rung of the spp ladder (default 1)
@@ -141,18 +143,19 @@ ConvergenceSeries converge_variant(const Scene& base, const RenderVariant& v,
   std::uint32_t seed = a.seed.value_or(base.seed);
   for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2, ++seed) {
     if (!series.points.empty() && spent + 2.0 * last > a.budget) break;
-    SceneRender r =
-        render_scene(run_backend, v.backend, scene, std::uint32_t(spp), seed, a.threads);
+    Scene rung = scene;
+    set_sample_count(rung, std::uint32_t(spp));
+    SceneRender r = render_scene(run_backend, v.backend, rung, rung.spp, seed, a.threads);
     check_same_size(r.mean, "render", reference, a.reference);
     ErrorMetrics m = error_metrics(r.mean, reference);
     ConvergencePoint p;
     p.seconds = r.result.stats.seconds;
-    p.spp = double(spp);
+    p.spp = double(rung.spp);
     p.rmse = m.rmse;
     p.relmse = m.relmse;
     series.points.push_back(p);
-    std::printf("  %-28s %8llu spp  %9.3f s  RMSE %.5g  relMSE %.5g\n", series.name.c_str(),
-                static_cast<unsigned long long>(spp), p.seconds, p.rmse, p.relmse);
+    std::printf("  %-28s %8u spp  %9.3f s  RMSE %.5g  relMSE %.5g\n", series.name.c_str(), rung.spp,
+                p.seconds, p.rmse, p.relmse);
     std::fflush(stdout);
     last = p.seconds;
     spent += p.seconds;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -154,7 +155,8 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
               (scenes / "floating_sphere/refs/test_directional_ref_rgb.exr").string() +
               " --budget 2 --max-spp 64 --variant label=direct" +
               " --variant integrator=path,max_depth=1,label=path-depth-1" +
-              " --targets 0.05,1e-9 --out " + dir.string(),
+              " --variant sampler=stratified,label=stratified" + " --targets 0.05,1e-9 --out " +
+              dir.string(),
           &out);
   std::printf("%s", out.c_str());
   ASSERT_EQ(status, 0);
@@ -162,6 +164,20 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
   EXPECT_EQ(csv.rfind("series,seconds,spp,rmse,relmse\n", 0), 0u) << csv;
   EXPECT_GE(count(csv, "\ndirect (cpu),"), 2u) << csv;
   EXPECT_GE(count(csv, "\npath-depth-1 (cpu),"), 2u) << csv;
+  // Each rung's sample_count is its spp, rounded as the sampler rounds it: squares.
+  std::istringstream lines(csv);
+  int stratified_rungs = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("stratified (cpu),", 0) != 0) continue;
+    ++stratified_rungs;
+    std::istringstream fields(line.substr(line.find(',') + 1));
+    double seconds = 0.0, spp = 0.0;
+    char comma = 0;
+    fields >> seconds >> comma >> spp;
+    const double root = std::round(std::sqrt(spp));
+    EXPECT_EQ(root * root, spp) << line;
+  }
+  EXPECT_GE(stratified_rungs, 2) << csv;
   EXPECT_NE(slurp(dir / "convergence.svg").find("<svg"), std::string::npos);
   std::string tte = slurp(dir / "time_to_error.csv");
   EXPECT_EQ(tte.rfind("series,metric,target,seconds\n", 0), 0u);
@@ -174,6 +190,10 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
   EXPECT_EQ(run(cli() + " converge x.xml --budget 1 2>&1", &out), 2);  // no --reference
   EXPECT_EQ(
       run(cli() + " converge x.xml --reference y.exr --budget 1 --variant depth=3 2>&1", &out), 2);
+  EXPECT_EQ(
+      run(cli() + " converge x.xml --reference y.exr --budget 1 --variant sampler=xy 2>&1", &out),
+      2);
+  EXPECT_NE(out.find("unknown sampler 'xy'"), std::string::npos) << out;
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <climits>
 #include <sstream>
 
+#include "scenes/sampler.h"
+
 namespace tr {
 namespace {
 
@@ -42,6 +44,10 @@ RenderVariant parse_variant(const std::string& spec) {
       v.max_depth = parse_int(key, value, -1);
     } else if (key == "rr_depth") {
       v.rr_depth = value == "off" ? INT_MAX : parse_int(key, value, 1);
+    } else if (key == "sampler") {
+      uint type = 0;
+      if (!sampler_type_of(value, type)) throw VariantError("unknown sampler '" + value + "'");
+      v.sampler = type;
     } else if (key == "backend") {
       if (value != "cpu" && value != "gpu")
         throw VariantError("backend must be cpu or gpu, got '" + value + "'");
@@ -65,6 +71,7 @@ Scene apply_variant(const Scene& scene, const RenderVariant& variant) {
   }
   if (variant.max_depth) it.max_depth = *variant.max_depth;
   if (variant.rr_depth) it.rr_depth = *variant.rr_depth;
+  if (variant.sampler) set_sampler(s, *variant.sampler, s.spp, true);
   return s;
 }
 

@@ -1,10 +1,12 @@
 // Render variants of `twinray converge`: integrator settings patched into a loaded scene
-// (SceneGlobals::integrator, read by both backends) and the backend to render with.
+// (SceneGlobals::integrator, read by both backends), its sampler, and the backend to render
+// with.
 //
 // A variant is written as comma-separated KEY=VALUE fields:
 //   integrator=path|direct   Mitsuba's `path` or `direct` (emitter and BSDF samples 1 each)
 //   max_depth=N              -1 for unbounded (Mitsuba semantics: 2 = direct lighting only)
 //   rr_depth=N|off           depth at which Russian roulette starts; off never starts it
+//   sampler=NAME             the scene's sampler replaced by NAME (scenes/sampler.h), jitter on
 //   backend=cpu|gpu
 //   label=TEXT               the series name (default: the fields as given, or "scene")
 #pragma once
@@ -26,12 +28,13 @@ struct RenderVariant {
   std::string backend = "cpu";
   std::optional<uint> integrator;  // INTEGRATOR_*
   std::optional<int> max_depth, rr_depth;
+  std::optional<uint> sampler;  // SAMPLER_*
 };
 
 // Throws VariantError naming the bad field.
 RenderVariant parse_variant(const std::string& spec);
 
-// The scene with the variant's integrator settings.
+// The scene with the variant's integrator settings and sampler.
 Scene apply_variant(const Scene& scene, const RenderVariant& variant);
 
 }  // namespace tr
