@@ -1,5 +1,6 @@
 #include "app/converge_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,11 +28,12 @@ namespace fs = std::filesystem;
 const char* kUsage =
     R"(usage: twinray converge SCENE.xml --reference REF.exr --budget SECONDS [options]
 
-For each variant, renders SCENE at start-spp, 2 start-spp, 4 start-spp, ... (a fresh render
-each, seeds seed, seed+1, ..., the sampler's sample_count set to the rung's spp and rounded
-as the sampler rounds it) until the variant's time budget is spent or the next render
-would overrun it (its time predicted as twice the last), and records the render time, RMSE
-and relMSE against REF (validation/image/metrics.h). Writes OUT/convergence.csv,
+For each variant, renders SCENE at start-spp, 2 start-spp, 4 start-spp, ... (--repeats fresh
+renders a rung, seeds seed, seed+1, ..., the sampler's sample_count set to the rung's spp and
+rounded as the sampler rounds it) until the variant's time budget is spent or the next rung
+would overrun it (its time predicted as twice the last), and records each rung's mean render
+time, RMSE and relMSE against REF (validation/image/metrics.h) and the standard error of the
+mean relMSE. Writes OUT/convergence.csv,
 OUT/convergence.svg (log-log RMSE and relMSE against seconds) and OUT/time_to_error.csv, and
 prints the time to reach each relMSE target and the fitted convergence rate.
 
@@ -44,7 +46,8 @@ Options:
   --budget SECONDS   time budget of each variant (required)
   --start-spp N      first rung of the spp ladder (default 1)
   --max-spp N        last rung at most (default 1048576)
-  --seed S           seed of the first rung (default: the scene's sampler seed)
+  --seed S           seed of the first render (default: the scene's sampler seed)
+  --repeats N        renders a rung, with distinct seeds, for error bars (default 1)
   --targets LIST     comma-separated relMSE levels for time-to-error (default 1e-2,1e-3,1e-4)
   --out DIR          output folder (default: converge-<scene name>)
   --threads N        CPU worker threads (default: all cores)
@@ -58,7 +61,7 @@ struct ConvergeArgs {
   std::string scene, reference, out;
   std::vector<RenderVariant> variants;
   double budget = 0.0;
-  std::uint32_t start_spp = 1, max_spp = 1u << 20, threads = 0;
+  std::uint32_t start_spp = 1, max_spp = 1u << 20, threads = 0, repeats = 1;
   std::optional<std::uint32_t> seed;  // unset: the scene's sampler `seed`
   std::vector<double> targets = {1e-2, 1e-3, 1e-4};
   LoadOptions load;
@@ -101,6 +104,8 @@ ConvergeArgs parse(int argc, char** argv) {
       a.max_spp = args.uint_value(arg, 1);
     } else if (arg == "--seed") {
       a.seed = args.uint_value(arg, 0);
+    } else if (arg == "--repeats") {
+      a.repeats = args.uint_value(arg, 1);
     } else if (arg == "--targets") {
       a.targets.clear();
       std::istringstream list(args.value(arg));
@@ -141,24 +146,35 @@ ConvergenceSeries converge_variant(const Scene& base, const RenderVariant& v,
   series.name = v.label + " (" + v.backend + ")";
   double spent = 0.0, last = 0.0;
   std::uint32_t seed = a.seed.value_or(base.seed);
-  for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2, ++seed) {
+  for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2) {
     if (!series.points.empty() && spent + 2.0 * last > a.budget) break;
     Scene rung = scene;
     set_sample_count(rung, std::uint32_t(spp));
-    SceneRender r = render_scene(run_backend, v.backend, rung, rung.spp, seed, a.threads);
-    check_same_size(r.mean, "render", reference, a.reference);
-    ErrorMetrics m = error_metrics(r.mean, reference);
     ConvergencePoint p;
-    p.seconds = r.result.stats.seconds;
     p.spp = double(rung.spp);
-    p.rmse = m.rmse;
-    p.relmse = m.relmse;
+    p.renders = int(a.repeats);
+    double rung_seconds = 0.0, relmse_squares = 0.0;
+    for (std::uint32_t k = 0; k < a.repeats; ++k, ++seed) {
+      SceneRender r = render_scene(run_backend, v.backend, rung, rung.spp, seed, a.threads);
+      check_same_size(r.mean, "render", reference, a.reference);
+      ErrorMetrics m = error_metrics(r.mean, reference);
+      rung_seconds += r.result.stats.seconds;
+      p.rmse += m.rmse / a.repeats;
+      p.relmse += m.relmse / a.repeats;
+      relmse_squares += m.relmse * m.relmse;
+    }
+    p.seconds = rung_seconds / a.repeats;
+    if (a.repeats > 1)
+      p.relmse_stderr = std::sqrt(std::max(0.0, relmse_squares - a.repeats * p.relmse * p.relmse) /
+                                  (double(a.repeats - 1) * a.repeats));
     series.points.push_back(p);
-    std::printf("  %-28s %8u spp  %9.3f s  RMSE %.5g  relMSE %.5g\n", series.name.c_str(), rung.spp,
+    std::printf("  %-28s %8u spp  %9.3f s  RMSE %.5g  relMSE %.5g", series.name.c_str(), rung.spp,
                 p.seconds, p.rmse, p.relmse);
+    if (a.repeats > 1) std::printf(" +- %.2g (%u renders)", p.relmse_stderr, a.repeats);
+    std::printf("\n");
     std::fflush(stdout);
-    last = p.seconds;
-    spent += p.seconds;
+    last = rung_seconds;
+    spent += rung_seconds;
   }
   return series;
 }

@@ -161,7 +161,7 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
   std::printf("%s", out.c_str());
   ASSERT_EQ(status, 0);
   std::string csv = slurp(dir / "convergence.csv");
-  EXPECT_EQ(csv.rfind("series,seconds,spp,rmse,relmse\n", 0), 0u) << csv;
+  EXPECT_EQ(csv.rfind("series,seconds,spp,rmse,relmse,relmse_stderr,renders\n", 0), 0u) << csv;
   EXPECT_GE(count(csv, "\ndirect (cpu),"), 2u) << csv;
   EXPECT_GE(count(csv, "\npath-depth-1 (cpu),"), 2u) << csv;
   // Each rung's sample_count is its spp, rounded as the sampler rounds it: squares.
@@ -194,6 +194,39 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
       run(cli() + " converge x.xml --reference y.exr --budget 1 --variant sampler=xy 2>&1", &out),
       2);
   EXPECT_NE(out.find("unknown sampler 'xy'"), std::string::npos) << out;
+}
+
+// --repeats: each rung is the mean of that many renders (distinct seeds) and carries the
+// standard error of its relMSE.
+TEST(ConvergeCommand, RepeatsGiveErrorBars) {
+  fs::path dir = scratch("converge_repeats");
+  fs::path scenes = fs::path(TWINRAY_QUICK_SUITE).parent_path() / "../mitsuba/tests/scenes";
+  std::string out;
+  ASSERT_EQ(
+      run(cli() + " converge " + (scenes / "floating_sphere/test_directional_direct.xml").string() +
+              " --reference " +
+              (scenes / "floating_sphere/refs/test_directional_ref_rgb.exr").string() +
+              " --budget 5 --max-spp 4 --repeats 3 --variant sampler=zsobol,label=z --out " +
+              dir.string(),
+          &out),
+      0)
+      << out;
+  std::istringstream lines(slurp(dir / "convergence.csv"));
+  std::string line;
+  std::getline(lines, line);
+  int rungs = 0;
+  for (; std::getline(lines, line); ++rungs) {
+    ASSERT_EQ(line.rfind("z (cpu),", 0), 0u) << line;
+    std::istringstream fields(line.substr(line.find(',') + 1));
+    std::vector<double> v;
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+    ASSERT_EQ(v.size(), 6u) << line;  // seconds, spp, rmse, relmse, relmse_stderr, renders
+    EXPECT_EQ(v[1], double(1 << rungs)) << line;
+    EXPECT_GT(v[4], 0.0) << "three renders of distinct seeds differ: " << line;
+    EXPECT_LT(v[4], v[3]) << line;
+    EXPECT_EQ(v[5], 3.0) << line;
+  }
+  EXPECT_EQ(rungs, 3);  // 1, 2 and 4 spp
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <string>
 
 #include "validation/image/xml_escape.h"
 
@@ -94,11 +95,12 @@ void panel(std::ostringstream& svg, const std::vector<ConvergenceSeries>& series
 }  // namespace
 
 std::string convergence_csv(const std::vector<ConvergenceSeries>& series) {
-  std::string out = "series,seconds,spp,rmse,relmse\n";
+  std::string out = "series,seconds,spp,rmse,relmse,relmse_stderr,renders\n";
   for (const ConvergenceSeries& s : series)
     for (const ConvergencePoint& p : s.points)
       out += csv_field(s.name) + "," + fmt("%.9g", p.seconds) + "," + fmt("%.9g", p.spp) + "," +
-             fmt("%.9g", p.rmse) + "," + fmt("%.9g", p.relmse) + "\n";
+             fmt("%.9g", p.rmse) + "," + fmt("%.9g", p.relmse) + "," +
+             fmt("%.9g", p.relmse_stderr) + "," + std::to_string(p.renders) + "\n";
   return out;
 }
 

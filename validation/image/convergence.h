@@ -9,11 +9,15 @@
 
 namespace tr {
 
+// One rung of a convergence series: the mean over `renders` independent renders (seeds) of
+// the same spp, with the standard error of that mean relMSE (0 for one render).
 struct ConvergencePoint {
   double seconds = 0.0;
   double spp = 0.0;
   double rmse = 0.0;
   double relmse = 0.0;
+  double relmse_stderr = 0.0;
+  int renders = 1;
 };
 
 struct ConvergenceSeries {
@@ -25,7 +29,8 @@ enum class ConvergenceMetric { rmse, relmse };
 
 double metric_value(const ConvergencePoint& p, ConvergenceMetric metric);
 
-// Columns: series,seconds,spp,rmse,relmse (RFC 4180 quoting of the series name).
+// Columns: series,seconds,spp,rmse,relmse,relmse_stderr,renders (RFC 4180 quoting of the series
+// name).
 std::string convergence_csv(const std::vector<ConvergenceSeries>& series);
 
 // Two log-log panels (RMSE and relMSE against seconds), one line per series, Okabe–Ito
