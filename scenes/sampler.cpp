@@ -82,6 +82,8 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
   } else if (type == SAMPLER_ZSOBOL) {
     // pbrt-v4: log2 of the film's larger side rounded up to a power of 2, plus ceil(log4 n).
     const Camera& c = scene.buffers.globals.camera;
+    if (std::max(c.width, c.height) > 65536u)  // Morton codes of 16-bit coordinates
+      throw SceneError("zsobol: a film of more than 65536 pixels a side");
     uint log2_side = 0, log2_n = 0;
     while ((1u << log2_side) < std::max(c.width, c.height)) ++log2_side;
     while ((1u << log2_n) < n) ++log2_n;

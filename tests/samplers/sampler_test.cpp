@@ -106,6 +106,8 @@ TEST(SampleCount, SaysWhenItRounds) {
   EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(300u, 12u));
   set_sample_count(scene, 32);
   EXPECT_EQ(scene.buffers.globals.sampler_params.resolution, uvec2(300u, 13u)) << "ceil(log4 32)";
+  scene.buffers.globals.camera.width = 65537;
+  EXPECT_THROW(set_sample_count(scene, 32), SceneError);
 }
 
 TEST(Independent, DrawsTheHashAsBefore) {
