@@ -18,9 +18,8 @@ const char* kUsage =
     "                           [--threads N] [--previews DIR]\n"
     "  Loads every *.xml scene directly inside FOLDER (as Mitsuba's documentation script does:\n"
     "  -D spp=N where a scene uses $spp) and renders it at N samples per pixel (default 1).\n"
-    "  Prints one line a scene: rendered, planned (a plugin an open issue adds, named),\n"
-    "  out-of-scope (a plugin outside twinray's scope, named) or FAILED (the error), then the\n"
-    "  counts. Exit status 1 when any scene FAILED.\n"
+    "  Prints one line a scene: rendered, out-of-scope (a plugin outside twinray's scope,\n"
+    "  named) or FAILED (the error), then the counts. Exit status 1 when any scene FAILED.\n"
     "  -a PATH         add a search path for the files the scenes name\n"
     "  --previews DIR  write DIR/<scene>.png (sRGB) for every rendered scene\n";
 
@@ -90,9 +89,9 @@ int conformance_command(int argc, char** argv) {
                   r.detail.empty() ? "" : "  ", r.detail.c_str());
       std::fflush(stdout);
     }
-    std::printf("%zu scenes: %d rendered, %d planned, %d out-of-scope, %d FAILED\n", scenes.size(),
-                counts[ConformanceOutcome::Rendered], counts[ConformanceOutcome::Planned],
-                counts[ConformanceOutcome::OutOfScope], counts[ConformanceOutcome::Failed]);
+    std::printf("%zu scenes: %d rendered, %d out-of-scope, %d FAILED\n", scenes.size(),
+                counts[ConformanceOutcome::Rendered], counts[ConformanceOutcome::OutOfScope],
+                counts[ConformanceOutcome::Failed]);
     return counts[ConformanceOutcome::Failed] > 0 ? kExitFailed : kExitOk;
   } catch (...) {
     return report_failure("twinray conformance");

@@ -13,14 +13,17 @@
 // hash of (pixel, ~pass, dimension, seed) (~pass keeps it apart from the per-sample hashes of
 // the first 2^31 samples), and the per-sample hash supplies the jitter. A 2D draw is one 2D
 // point of the sampler, so 1D and 2D draws consume the dimension counter as `independent`.
-// `zsobol` (core/samplers/zsobol.h) correlates the pixels instead: its permutations and
-// scrambles are fixed per (pass, dimension, seed) for the whole image.
+// `sobol` (core/samplers/sobol.h) hashes the same (pixel, ~pass, dimension, seed) into the
+// scrambles of its per-pixel sequence; `zsobol` (core/samplers/zsobol.h) correlates the pixels
+// instead: its permutations and scrambles are fixed per (pass, dimension, seed) for the whole
+// image.
 #ifndef TWINRAY_CORE_RNG_H
 #define TWINRAY_CORE_RNG_H
 
 #include "core/samplers/ldsampler.h"
 #include "core/samplers/multijitter.h"
 #include "core/samplers/orthogonal.h"
+#include "core/samplers/sobol.h"
 #include "core/samplers/stratified.h"
 #include "core/samplers/zsobol.h"
 
@@ -126,6 +129,12 @@ INLINE float rng_next_1d(INOUT(Rng) r) {
     r.dimension += 1u;
     return ldsampler_1d(r.sampler_params, index, pass_bits.x, pass_bits.y);
   }
+  if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && type == SAMPLER_SOBOL) {
+    uint draw = r.dimension;
+    uvec4 pass_bits = rng_pass_bits(r);
+    r.dimension += 1u;
+    return sobol_1d(r.sampler_params, rng_index_in_pass(r), draw, pass_bits);
+  }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);
     uvec2 xy = rng_pixel_xy(r);
@@ -164,6 +173,12 @@ INLINE vec2 rng_next_2d(INOUT(Rng) r) {
     uint index = rng_index_in_pass(r);
     r.dimension += 1u;
     return ldsampler_2d(r.sampler_params, index, pass_bits.x, uvec2(pass_bits.y, pass_bits.z));
+  }
+  if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && type == SAMPLER_SOBOL) {
+    uint draw = r.dimension;
+    uvec4 pass_bits = rng_pass_bits(r);
+    r.dimension += 1u;
+    return sobol_2d(r.sampler_params, rng_index_in_pass(r), draw, pass_bits);
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);

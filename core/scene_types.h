@@ -233,6 +233,7 @@ const uint SAMPLER_LDSAMPLER = 2u;    // core/samplers/ldsampler.h
 const uint SAMPLER_MULTIJITTER = 3u;  // core/samplers/multijitter.h
 const uint SAMPLER_ORTHOGONAL = 4u;   // core/samplers/orthogonal.h
 const uint SAMPLER_ZSOBOL = 5u;       // core/samplers/zsobol.h
+const uint SAMPLER_SOBOL = 6u;        // core/samplers/sobol.h
 
 // The scene's sampler. A pixel's samples come in passes of sample_count: within a pass each
 // dimension's points are stratified (Mitsuba semantics, after its sample_count rounding).

@@ -1,6 +1,7 @@
 #include "gpu_backend/gpu_scene.h"
 
 #include "core/bindings.h"
+#include "core/samplers/sobol_matrices.h"
 #include "gpu_backend/gpu_error.h"
 
 namespace tr {
@@ -34,6 +35,7 @@ GpuScene::GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptor
   buffers_[BINDING_UVS] = upload_vector(device, scene.uvs, storage);
   buffers_[BINDING_INDICES] = upload_vector(device, scene.indices, build_input);
   buffers_[BINDING_ATTRIBUTES] = upload_vector(device, scene.attributes, storage);
+  buffers_[BINDING_SOBOL] = upload_buffer(device, SOBOL_MATRICES, sizeof(SOBOL_MATRICES), storage);
   GeometryLayout geometry = geometry_layout(scene);
   buffers_[BINDING_GEOMETRY_SHAPES] = upload_vector(device, geometry.table, storage);
   accel_ = std::make_unique<SceneAccel>(device, scene, geometry, buffers_[BINDING_POSITIONS],

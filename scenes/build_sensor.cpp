@@ -1,7 +1,7 @@
 // Sensor (perspective, thinlens, orthographic), film (hdrfilm), reconstruction filter (box,
 // gaussian, tent, mitchell, catmullrom, lanczos), sampler (independent, stratified, ldsampler,
-// multijitter, orthogonal; scenes/sampler.h) and integrator (path, direct, moment) -> Camera,
-// Integrator, the sampler and the Scene's spp/seed. Defaults as Mitsuba 3 (src/sensors,
+// multijitter, orthogonal, zsobol, sobol; scenes/sampler.h) and integrator (path, direct, moment)
+// -> Camera, Integrator, the sampler and the Scene's spp/seed. Defaults as Mitsuba 3 (src/sensors,
 // src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters, src/samplers,
 // src/integrators).
 #include <unistd.h>
@@ -229,7 +229,8 @@ void SceneBuilder::add_sensor(Node& s) {
   uint sampler_type;
   if (!sampler_type_of(sampler.type, sampler_type))
     fail(sampler.loc, "unknown sampler type \"", sampler.type,
-         "\" (supported: independent, stratified, ldsampler, multijitter, orthogonal, zsobol)");
+         "\" (supported: independent, stratified, ldsampler, multijitter, orthogonal, zsobol, "
+         "sobol)");
   long long spp = take_integer(sampler, "sample_count", 4), seed = take_integer(sampler, "seed", 0);
   if (spp <= 0 || spp > 0xffffffffLL)
     fail(sampler.loc, describe(sampler), ": sample_count must be positive");

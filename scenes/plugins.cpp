@@ -18,7 +18,6 @@ struct Entry {
 const char* const POLARIZATION = "out of scope: polarization (twinray renders unpolarized RGB)";
 const char* const MEDIA = "out of scope: participating media (twinray renders surfaces in vacuum)";
 const char* const CURVES = "out of scope: curve primitives";
-const char* const SAMPLERS_ISSUE = "planned: the samplers issue";
 const char* const NOT_YET = "not implemented by twinray";
 
 // Every plugin of Mitsuba 3.8's src/<kind>/ folders, by the XML tag that instantiates it.
@@ -104,8 +103,8 @@ const Entry TABLE[] = {
     {"sampler", "multijitter", PluginSupport::Supported, ""},
     {"sampler", "orthogonal", PluginSupport::Supported, ""},
     {"sampler", "ldsampler", PluginSupport::Supported, ""},
-    // twinray samplers beyond Mitsuba (pbrt-v4's), named by the samplers issue
-    {"sampler", "sobol", PluginSupport::Planned, SAMPLERS_ISSUE},
+    // twinray samplers beyond Mitsuba (pbrt-v4's)
+    {"sampler", "sobol", PluginSupport::Supported, ""},
     {"sampler", "zsobol", PluginSupport::Supported, ""},
     // integrators
     {"integrator", "path", PluginSupport::Supported, ""},

@@ -13,9 +13,8 @@ namespace tr {
 
 enum class PluginSupport {
   Supported,
-  Planned,        // in scope, not implemented yet (an open issue names it)
   OutOfScope,     // twinray models RGB light transport in vacuum: no polarization, media...
-  Unimplemented,  // a Mitsuba plugin that twinray does not implement and no issue plans yet
+  Unimplemented,  // a Mitsuba plugin that twinray does not implement
   Unknown,        // not a Mitsuba 3 plugin of this kind at all (a typo?)
 };
 

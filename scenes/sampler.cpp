@@ -12,8 +12,8 @@ namespace {
 const std::uint64_t MAX_PASS = 1u << 24;  // pass indices stay exact in float (core/samplers/)
 
 // Mitsuba's plugin names, by SAMPLER_*.
-const std::array<const char*, 6> SAMPLER_NAMES = {"independent", "stratified", "ldsampler",
-                                                  "multijitter", "orthogonal", "zsobol"};
+const std::array<const char*, 7> SAMPLER_NAMES = {
+    "independent", "stratified", "ldsampler", "multijitter", "orthogonal", "zsobol", "sobol"};
 
 std::uint64_t smallest_prime_at_least(std::uint64_t x) {
   for (;; ++x) {
@@ -50,7 +50,7 @@ uint rounded_sample_count(uint type, uint requested) {
     std::uint64_t p = smallest_prime_at_least(2);
     while (p * p < n) p = smallest_prime_at_least(p + 1);
     n = p * p;
-  } else if (type == SAMPLER_ZSOBOL) {
+  } else if (type == SAMPLER_ZSOBOL || type == SAMPLER_SOBOL) {
     std::uint64_t r = 1;
     while (r < n) r *= 2;
     n = r;
@@ -94,9 +94,10 @@ void set_sampler(Scene& scene, uint type, uint requested, bool jitter) {
   scene.spp = n;
   scene.sample_count_note.clear();
   if (n != requested)
-    scene.sample_count_note = std::string(sampler_name(type)) + ": sample_count " +
-                              std::to_string(requested) + " rounded up to " + std::to_string(n) +
-                              (type == SAMPLER_ZSOBOL ? ", as pbrt-v4" : ", as Mitsuba");
+    scene.sample_count_note =
+        std::string(sampler_name(type)) + ": sample_count " + std::to_string(requested) +
+        " rounded up to " + std::to_string(n) +
+        (type == SAMPLER_ZSOBOL || type == SAMPLER_SOBOL ? ", as pbrt-v4" : ", as Mitsuba");
 }
 
 void set_sample_count(Scene& scene, uint requested) {

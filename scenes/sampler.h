@@ -14,12 +14,12 @@ const char* sampler_name(uint type);
 
 // The sample count Mitsuba renders when asked for `requested`: stratified the next square,
 // ldsampler the next power of 4 (at least 4), multijitter floor(sqrt(n)) rows of
-// ceil(n / rows) columns, orthogonal the square of the next prime (at least 4); zsobol (pbrt-v4)
-// the next power of 2; independent keeps it. Throws SceneError past 2^24 points a pass.
+// ceil(n / rows) columns, orthogonal the square of the next prime (at least 4); zsobol and sobol
+// (pbrt-v4) the next power of 2; independent keeps it. Throws SceneError past 2^24 points a pass.
 uint rounded_sample_count(uint type, uint requested);
 
 // Sets the scene's sampler to `type` at `requested` samples per pixel, rounded as Mitsuba
-// (zsobol: pbrt-v4) rounds it; zsobol reads the film's size from globals.camera, which must be
+// (zsobol, sobol: pbrt-v4) rounds it; zsobol reads the film's size from globals.camera, which must be
 // set: globals.sampler, Scene.spp and Scene.sample_count_note ("stratified:
 // sample_count 10 rounded up to 16, as Mitsuba", empty when not rounded).
 void set_sampler(Scene& scene, uint type, uint requested, bool jitter);

@@ -11,8 +11,7 @@
 // onto an aligned block, so a pixel's n samples stay a block of the sequence — a (0, log2 n, 2)
 // -net — while neighbouring pixels receive disjoint, decorrelated blocks: the error spreads
 // over the image as blue noise. Each coordinate is then Owen-scrambled by a hash of the
-// dimension (Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4) 2020; the constants of
-// pbrt-v4's FastOwenScrambler), which keeps the net property.
+// dimension (core/samplers/owen_scramble.h), which keeps the net property.
 //
 // As in pbrt-v4 the permutations and scrambles are shared by all pixels (that is what
 // correlates them); unlike pbrt-v4 they also depend on the seed and on the pass (sample index
@@ -22,6 +21,8 @@
 #define TWINRAY_CORE_SAMPLERS_ZSOBOL_H
 
 #include "core/samplers/ldsampler.h"
+#include "core/samplers/lowbias32.h"
+#include "core/samplers/owen_scramble.h"
 
 TR_NAMESPACE_BEGIN
 
@@ -55,34 +56,10 @@ INLINE uint zsobol_permute_digit(uint h, uint digit) {
   return image ^ (h >> 30u);
 }
 
-// pbrt-v4's FastOwenScrambler without its bit reversals: on the reversed bits of a
-// fixed-point value, a hash whose every output bit depends only on the input bits below it,
-// i.e. a nested random permutation of the elementary intervals (an Owen scramble).
-INLINE uint zsobol_owen_hash(uint reversed, uint seed) {
-  uint v = reversed;
-  v ^= v * 0x3d20adeau;
-  v += seed;
-  v *= (seed >> 16u) | 1u;
-  v ^= v * 0x05526c56u;
-  v ^= v * 0x53a22864u;
-  return v;
-}
-
-// lowbias32, a 32-bit integer hash of low bias found by search (Wellons, "Prospecting for Hash
-// Functions", 2018).
-INLINE uint zsobol_mix(uint h) {
-  h ^= h >> 16u;
-  h *= 0x7feb352du;
-  h ^= h >> 15u;
-  h *= 0x846ca68bu;
-  h ^= h >> 16u;
-  return h;
-}
-
 // The hash that permutes the digit below `higher` (the digits above it) for the dimension's
 // key.
 INLINE uint zsobol_digit_hash(uvec2 higher, uvec4 key) {
-  return zsobol_mix(((higher.x ^ key.z) * 0x9e3779b9u + key.w) ^ (higher.y * 0x85ebca6bu));
+  return lowbias32(((higher.x ^ key.z) * 0x9e3779b9u + key.w) ^ (higher.y * 0x85ebca6bu));
 }
 
 // The Sobol index of `index` (in [0, n)) of pixel (x, y), its digits permuted for the
@@ -113,13 +90,13 @@ INLINE uint zsobol_sobol_index(Sampler s, uint x, uint y, uint index, uvec4 key)
 // point are the index itself.
 INLINE float zsobol_1d(Sampler s, uint x, uint y, uint index, uvec4 key) {
   uint i = zsobol_sobol_index(s, x, y, index, key);
-  return ld_bits_to_float(van_der_corput_bits(zsobol_owen_hash(i, key.x)));
+  return ld_bits_to_float(van_der_corput_bits(owen_scramble_reversed(i, key.x)));
 }
 
 INLINE vec2 zsobol_2d(Sampler s, uint x, uint y, uint index, uvec4 key) {
   uint i = zsobol_sobol_index(s, x, y, index, key);
-  uint sx = zsobol_owen_hash(i, key.x);
-  uint sy = zsobol_owen_hash(sobol_2_reversed_bits(i), key.y);
+  uint sx = owen_scramble_reversed(i, key.x);
+  uint sy = owen_scramble_reversed(sobol_2_reversed_bits(i), key.y);
   return vec2(ld_bits_to_float(van_der_corput_bits(sx)), ld_bits_to_float(van_der_corput_bits(sy)));
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `twinray conformance FOLDER`: one line a scene (rendered / planned / out-of-scope / FAILED
+# `twinray conformance FOLDER`: one line a scene (rendered / out-of-scope / FAILED
 # with the plugin or message), the counts, exit 1 when a scene FAILED, previews written.
 set -eu
 twinray=$1
@@ -20,7 +20,7 @@ XML
 }
 scene a_good '<shape type="sphere"><transform name="to_world"><translate z="4"/></transform></shape><emitter type="constant"/>'
 scene b_hair '<shape type="sphere"><bsdf type="hair"/></shape>'
-scene c_planned '<shape type="sphere"/>' sobol
+scene c_unimplemented '<shape type="sphere"><bsdf type="principledthin"/></shape>'
 scene d_typo '<shape type="sphere"><float name="radiuss" value="1"/></shape>'
 
 status=0
@@ -30,13 +30,13 @@ cat "$dir/out.txt"
 expect() { grep -q -- "$1" "$dir/out.txt" || { echo "missing line: $1"; exit 1; }; }
 expect '^rendered  *a_good.xml'
 expect '^out-of-scope  *b_hair.xml .*not supported by twinray: hair (out of scope'
-expect '^planned  *c_planned.xml .*not supported by twinray: sobol (planned'
+expect '^FAILED  *c_unimplemented.xml .*not supported by twinray: principledthin (not implemented'
 expect "^FAILED  *d_typo.xml .*d_typo.xml:7: unused parameter 'radiuss'"
-expect '^4 scenes: 1 rendered, 1 planned, 1 out-of-scope, 1 FAILED$'
+expect '^4 scenes: 1 rendered, 1 out-of-scope, 2 FAILED$'
 [ -s "$dir/previews/a_good.png" ] || { echo "no preview for the rendered scene"; exit 1; }
 [ "$(ls "$dir/previews")" = "a_good.png" ] || { echo "previews for scenes that did not render"; exit 1; }
 
-rm "$dir/scenes/d_typo.xml"
+rm "$dir/scenes/c_unimplemented.xml" "$dir/scenes/d_typo.xml"
 "$twinray" conformance "$dir/scenes" >/dev/null || { echo "expected exit 0 without FAILED scenes"; exit 1; }
 status=0
 "$twinray" conformance "$dir/nowhere" 2>/dev/null || status=$?

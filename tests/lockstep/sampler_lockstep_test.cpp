@@ -1,4 +1,4 @@
-// CPU <-> GPU lockstep of the stratified samplers and zsobol (issue 11): the Cornell box
+// CPU <-> GPU lockstep of the stratified samplers, zsobol and sobol (issue 11): the Cornell box
 // (48x48) with each sampler at 16 spp (orthogonal: 25), so that every draw of the path goes
 // through core/samplers/ on both sides. Without jitter the points sit at strata centers,
 // symmetric in x and y, so on the Cornell box the camera rays of pixels on the image diagonals
@@ -45,6 +45,7 @@ TEST(SamplerLockstep, Multijitter) {
   expect_lockstep("multijitter", cornell_box(SAMPLER_MULTIJITTER), 16, 34);
 }
 TEST(SamplerLockstep, Zsobol) { expect_lockstep("zsobol", cornell_box(SAMPLER_ZSOBOL), 16, 36); }
+TEST(SamplerLockstep, Sobol) { expect_lockstep("sobol", cornell_box(SAMPLER_SOBOL), 16, 37); }
 
 }  // namespace
 }  // namespace tr

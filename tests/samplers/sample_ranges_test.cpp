@@ -25,7 +25,7 @@ TEST(SampleRanges, RenderAloneAndMergeExactly) {
   load.defines["width"] = "24";
   load.defines["height"] = "24";
   for (uint type : {SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER, SAMPLER_ORTHOGONAL,
-                    SAMPLER_ZSOBOL}) {
+                    SAMPLER_ZSOBOL, SAMPLER_SOBOL}) {
     Scene scene = load_scene(TWINRAY_CORNELL_BOX, load);
     set_sampler(scene, type, 16, true);
     RenderResult whole = render_ranges(scene, {16});

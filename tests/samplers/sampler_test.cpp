@@ -40,7 +40,7 @@ vec2 draw_2d(const Sampler& s, uint pixel, uint index, uint seed, uint dimension
 }
 
 const uint kStratifiedTypes[] = {SAMPLER_STRATIFIED, SAMPLER_LDSAMPLER, SAMPLER_MULTIJITTER,
-                                 SAMPLER_ORTHOGONAL, SAMPLER_ZSOBOL};
+                                 SAMPLER_ORTHOGONAL, SAMPLER_ZSOBOL,    SAMPLER_SOBOL};
 
 // zsobol's pixels share one randomization: its independent randomizations are seeds.
 bool randomized_by_seed(const Sampler& s) { return s.type == SAMPLER_ZSOBOL; }
@@ -77,6 +77,7 @@ TEST(SampleCount, RoundsAsMitsuba) {
       {SAMPLER_ORTHOGONAL, 16, 25},   {SAMPLER_ORTHOGONAL, 50, 121},  // 8, 9 and 10 are not prime
       {SAMPLER_ORTHOGONAL, 289, 289}, {SAMPLER_ZSOBOL, 1, 1},          {SAMPLER_ZSOBOL, 3, 4},
       {SAMPLER_ZSOBOL, 16, 16},       {SAMPLER_ZSOBOL, 17, 32},  // pbrt-v4: powers of 2
+      {SAMPLER_SOBOL, 1, 1},          {SAMPLER_SOBOL, 3, 4},           {SAMPLER_SOBOL, 1000, 1024},
   };
   for (const Rounding& r : table)
     EXPECT_EQ(rounded_sample_count(r.type, r.requested), r.rendered)
@@ -145,7 +146,7 @@ void expect_stratified(uint type, uint requested, bool jitter) {
           points.push_back(p);
           columns.insert(uint(p.x * float(n)));
           rows.insert(uint(p.y * float(n)));
-          if (type != SAMPLER_LDSAMPLER && type != SAMPLER_ZSOBOL)
+          if (type != SAMPLER_LDSAMPLER && type != SAMPLER_ZSOBOL && type != SAMPLER_SOBOL)
             cells.insert(uint(p.y * float(res.y)) * res.x + uint(p.x * float(res.x)));
         }
         EXPECT_EQ(strata_1d.size(), n) << "1D: one point per stratum of 1/n";
@@ -157,7 +158,9 @@ void expect_stratified(uint type, uint requested, bool jitter) {
           EXPECT_EQ(columns.size(), n) << "n-rooks: one point per column 1/n wide";
           EXPECT_EQ(rows.size(), n) << "n-rooks: one point per row 1/n high";
         }
-        if (type == SAMPLER_LDSAMPLER || type == SAMPLER_ZSOBOL) {
+        // sobol: the film's dimensions (Sobol's first two, draw 0); other pairs have t > 0.
+        if (type == SAMPLER_LDSAMPLER || type == SAMPLER_ZSOBOL ||
+            (type == SAMPLER_SOBOL && dim == 0)) {
           // (0, m, 2)-net in base 2, n = 2^m: every elementary interval 2^-a x 2^-(m - a).
           uint m = 0;
           while ((1u << m) < n) ++m;
@@ -208,6 +211,11 @@ TEST(Stratification, Multijitter) {
     expect_stratified(SAMPLER_MULTIJITTER, requested, true);
     expect_stratified(SAMPLER_MULTIJITTER, requested, false);
   }
+}
+
+TEST(Stratification, Sobol) {
+  for (uint requested : {1u, 2u, 8u, 16u, 32u, 256u, 1024u})
+    expect_stratified(SAMPLER_SOBOL, requested, true);
 }
 
 TEST(Stratification, Zsobol) {

@@ -55,8 +55,8 @@ TEST(SceneErrors, UnknownPlugins) {
                "plugin)");
   expect_error("\n<shape type=\"sphere\">\n<bsdf type=\"velvet\"/></shape>", "velvet",
                "not supported by twinray: velvet (Mitsuba 3 has no such plugin)");
-  expect_error("\n\n<sensor type=\"perspective\"><sampler type=\"sobol\"/></sensor>", "sobol",
-               "not supported by twinray: sobol (planned: the samplers issue)");
+  expect_error("\n\n<integrator type=\"ptracer\"/>", "ptracer",
+               "not supported by twinray: ptracer (not implemented by twinray)");
   expect_error("<integrator type=\"volpath\"/>", "volpath",
                "not supported by twinray: volpath (out of scope: participating media");
   expect_error(

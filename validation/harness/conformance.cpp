@@ -43,7 +43,6 @@ ConformanceResult check_conformance(const std::string& scene_path,
     r.outcome = ConformanceOutcome::Rendered;
   } catch (const UnsupportedPluginError& e) {
     r.outcome = e.support == PluginSupport::OutOfScope ? ConformanceOutcome::OutOfScope
-                : e.support == PluginSupport::Planned  ? ConformanceOutcome::Planned
                                                        : ConformanceOutcome::Failed;
     r.detail = e.what();
   } catch (const std::exception& e) {
@@ -58,8 +57,6 @@ const char* outcome_name(ConformanceOutcome outcome) {
   switch (outcome) {
     case ConformanceOutcome::Rendered:
       return "rendered";
-    case ConformanceOutcome::Planned:
-      return "planned";
     case ConformanceOutcome::OutOfScope:
       return "out-of-scope";
     case ConformanceOutcome::Failed:

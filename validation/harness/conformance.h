@@ -1,6 +1,6 @@
 // Scene-folder conformance: load every Mitsuba scene of a folder and render it at a few samples
-// per pixel, sorting each into rendered, refused by design (a plugin out of twinray's scope or
-// planned by an open issue, named) or failed (the message). The `twinray conformance` verb.
+// per pixel, sorting each into rendered, refused by design (a plugin out of twinray's scope,
+// named) or failed (the message). The `twinray conformance` verb.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,7 @@
 
 namespace tr {
 
-enum class ConformanceOutcome { Rendered, Planned, OutOfScope, Failed };
+enum class ConformanceOutcome { Rendered, OutOfScope, Failed };
 
 struct ConformanceOptions {
   std::uint32_t spp = 1;                  // also given as -D spp=... where the scene asks for $spp

@@ -1,0 +1,73 @@
+// `sobol`: each pixel's samples are the points of the Sobol sequence (Joe & Kuo's direction
+// numbers, core/samplers/sobol_matrices.h), every coordinate Owen-scrambled by a hash of
+// (pixel, pass, dimension, seed) (core/samplers/owen_scramble.h): randomized quasi-Monte
+// Carlo as in Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4) 2020, §4, and pbrt-v4's
+// SobolSample with its FastOwen randomization (Pharr, Jakob & Humphreys, "Physically Based
+// Rendering", 4th ed., §8.7). The first 2^k samples of a pixel form a (t, k, s)-net in all
+// dimensions at once (not only in pairs of them, as the padded samplers stratify), whose
+// Owen scrambling keeps the net and makes each point uniform (Owen 1995), so a pixel's
+// estimate is unbiased and a pass is an independent randomization.
+//
+// Draw number c of a sample (a 1D or 2D draw, core/rng.h) takes Sobol dimension 2c, or 2c and
+// 2c + 1: the camera's film position is dimensions 0 and 1. Past the table (draw 64 on, deep
+// in a path) the dimensions repeat from 2 with the pass's indices permuted by a hash of the
+// draw (Kensler's permutation, core/samplers/permute.h), which decorrelates the repeat from
+// its first use ("padding", pbrt-v4 §8.7.6).
+//
+// pbrt-v4's SobolSampler instead takes one sequence for the whole image (a pixel's samples
+// are the points that fall in it) and leaves the two film dimensions unscrambled: a pixel's
+// film positions are then the same for every seed, so seeds are not independent
+// randomizations and an average over seeds is not an unbiased estimate of the pixel
+// integral. Scrambling per pixel keeps both properties; `zsobol` is the variant whose
+// pixels are correlated.
+#ifndef TWINRAY_CORE_SAMPLERS_SOBOL_H
+#define TWINRAY_CORE_SAMPLERS_SOBOL_H
+
+#include "core/samplers/ldsampler.h"
+#include "core/samplers/lowbias32.h"
+#include "core/samplers/owen_scramble.h"
+#include "core/samplers/permute.h"
+#include "core/samplers/sobol_matrices.h"
+#include "core/scene_access.h"
+
+TR_NAMESPACE_BEGIN
+
+// Point `index` of Sobol dimension `dimension`, its digits reversed (bit j the 2^-(j+1) digit).
+INLINE uint sobol_reversed_bits(uint index, uint dimension) {
+  uint v = 0u;
+  uint column = dimension * SOBOL_COLUMNS;
+  for (; index != 0u; index >>= 1u) {
+    if ((index & 1u) != 0u) v ^= scene_sobol_column(column);
+    column += 1u;
+  }
+  return v;
+}
+
+INLINE float sobol_scrambled(uint index, uint dimension, uint seed) {
+  uint scrambled = owen_scramble_reversed(sobol_reversed_bits(index, dimension), lowbias32(seed));
+  return ld_bits_to_float(van_der_corput_bits(scrambled));
+}
+
+// The first Sobol dimension of draw `draw`; past the table, `index` is permuted by `perm`.
+INLINE uint sobol_dimension(Sampler s, uint draw, uint perm, INOUT(uint) index) {
+  uint dimension = 2u * draw;
+  if (dimension < SOBOL_DIMENSIONS) return dimension;
+  index = permute_kensler(index, s.sample_count, perm);
+  return 2u + (dimension - 2u) % (SOBOL_DIMENSIONS - 2u);
+}
+
+// index: the sample's index within its pass; bits: the hash of (pixel, pass, draw, seed).
+INLINE float sobol_1d(Sampler s, uint index, uint draw, uvec4 bits) {
+  uint dimension = sobol_dimension(s, draw, bits.z, index);
+  return sobol_scrambled(index, dimension, bits.x);
+}
+
+INLINE vec2 sobol_2d(Sampler s, uint index, uint draw, uvec4 bits) {
+  uint dimension = sobol_dimension(s, draw, bits.z, index);
+  return vec2(sobol_scrambled(index, dimension, bits.x),
+              sobol_scrambled(index, dimension + 1u, bits.y));
+}
+
+TR_NAMESPACE_END
+
+#endif
