@@ -21,6 +21,7 @@
 #include "io/image.h"
 #include "io/temp_file.h"
 #include "render/checkpoint.h"
+#include "render/error_estimate.h"
 #include "render/film_error.h"
 #include "render/write_result.h"
 #include "scenes/load_scene.h"
@@ -33,13 +34,19 @@ namespace {
 const char* kUsage =
     "usage: twinray render SCENE.xml [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
+    "                      [--randomizations K]\n"
     "  Renders a Mitsuba 3 XML scene. Writes OUT.exr (mean radiance, RGB in the film's\n"
     "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
-    "  OUT_var.exr (per-sample variance) and OUT.png (sRGB preview); OUT defaults to the\n"
-    "  scene's file name in the current directory.\n"
+    "  OUT_var.exr (per-sample variance v: v / spp estimates the variance of a pixel) and\n"
+    "  OUT.png (sRGB preview); OUT defaults to the scene's file name in the current directory.\n"
     "  -D NAME=VALUE   override a <default> of the scene      -a PATH  add a search path\n"
     "  --spp N         samples per pixel (default: the scene's sampler sample_count), rounded\n"
     "                  as the scene's sampler rounds sample_count\n"
+    "  --randomizations K  render K independent randomizations (passes) of the scene's\n"
+    "                  correlated sampler, each of ceil(spp / K) samples rounded as the sampler\n"
+    "                  rounds sample_count (spp becomes K times that); with K >= 2 the variance\n"
+    "                  output estimates the error from the passes (K >= 16 for --target-error).\n"
+    "                  independent: accepted, changes nothing. Default: one pass\n"
     "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
@@ -65,6 +72,7 @@ struct RenderArgs {
   RenderBudget budget;
   double checkpoint_seconds = 0.0;  // 0: no checkpoints
   std::string resume;
+  std::uint32_t randomizations = 0;  // 0: not asked for (one pass, Mitsuba semantics)
 };
 
 double positive_number(const std::string& option, const std::string& value) {
@@ -105,6 +113,8 @@ RenderArgs parse(int argc, char** argv) {
       a.budget.error = positive_number(arg, args.value(arg));
     } else if (arg == "--checkpoint") {
       a.checkpoint_seconds = positive_number(arg, args.value(arg));
+    } else if (arg == "--randomizations") {
+      a.randomizations = args.uint_value(arg, 1);
     } else if (arg == "--resume") {
       a.resume = args.value(arg);
     } else if (!arg.empty() && arg[0] == '-') {
@@ -130,6 +140,31 @@ void check_output_directory(const std::string& path) {
   TempFile probe(path);  // what access() cannot tell (e.g. for root): whether files can be made
 }
 
+// --randomizations K: the scene's correlated sampler in K passes of ceil(spp / K) samples,
+// rounded as the sampler rounds sample_count (scenes/sampler.h); spp becomes K times the pass.
+// Returns false (a usage error, printed) when the pass or the total is out of range.
+bool set_randomizations(Scene& scene, std::uint32_t k, std::uint32_t& spp) {
+  const Sampler& sampler = scene.buffers.globals.sampler_params;
+  if (sampler.type == SAMPLER_INDEPENDENT) return true;
+  const std::uint32_t requested = spp ? spp : scene.spp;
+  const std::uint32_t pass = requested / k + (requested % k != 0 ? 1 : 0);
+  try {
+    set_sampler(scene, sampler.type, pass, sampler.jitter != 0u);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "twinray render: --randomizations %u: %s\n", k, e.what());
+    return false;
+  }
+  const std::uint64_t total = std::uint64_t(k) * scene.buffers.globals.sampler_params.sample_count;
+  if (total > 0xffffffffull) {
+    std::fprintf(stderr,
+                 "twinray render: --randomizations %u: %llu samples per pixel are too many\n", k,
+                 static_cast<unsigned long long>(total));
+    return false;
+  }
+  spp = std::uint32_t(total);
+  return true;
+}
+
 void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOutcome& outcome,
                    const std::string& sample_count_note) {
   const RenderStats& s = r.stats;
@@ -143,12 +178,30 @@ void print_summary(const RenderResult& r, const OutputPaths& paths, const PassOu
   if (std::isfinite(outcome.error))
     std::printf("twinray: stopped: %s; estimated relative error %.4g\n",
                 stop_reason_name(outcome.stop), outcome.error);
+  else if (r.pass_size > 0)
+    std::printf("twinray: stopped: %s; relative error not estimated below %u passes (%u done)\n",
+                stop_reason_name(outcome.stop), kMinErrorPasses,
+                completed_passes(r.pass_size, r.spp));
   else
     std::printf("twinray: stopped: %s; relative error not estimated below %u spp\n",
                 stop_reason_name(outcome.stop), kMinErrorSamples);
   std::printf("twinray: backend %s (%s); wrote %s, %s, %s\n", r.backend.c_str(), r.device.c_str(),
               paths.image.c_str(), paths.variance.c_str(), paths.preview.c_str());
   if (!sample_count_note.empty()) std::printf("twinray: %s\n", sample_count_note.c_str());
+  if (r.pass_size > 0)
+    std::printf("twinray: variance output: %s\n",
+                variance_estimate_name(r.pass_size, r.spp).c_str());
+}
+
+// A correlated sampler's variance output that rests on fewer than 2 passes is the per-sample
+// variance, no estimate of its error: one line on stderr says so and names the fix.
+void warn_without_passes(const RenderResult& r, const std::string& sampler) {
+  if (r.pass_size == 0 || variance_from_passes(r.pass_size, r.spp)) return;
+  std::fprintf(stderr,
+               "twinray: warning: %s's samples are correlated and the variance output rests on "
+               "%u complete pass(es): it is their per-sample variance, not an error estimate; "
+               "render with --randomizations K (K >= 2) for one\n",
+               sampler.c_str(), completed_passes(r.pass_size, r.spp));
 }
 
 }  // namespace
@@ -171,7 +224,7 @@ int render_command(int argc, char** argv) {
     OutputPaths paths = output_paths(a.output);
     check_output_directory(paths.image);
     Scene scene = load_scene(a.scene, a.load);
-    if (a.render.spp) {
+    if (a.render.spp && a.randomizations == 0) {
       try {
         set_sample_count(scene, a.render.spp);
       } catch (const SceneError& e) {
@@ -180,6 +233,8 @@ int render_command(int argc, char** argv) {
       }
       a.render.spp = scene.spp;
     }
+    if (a.randomizations > 0 && !set_randomizations(scene, a.randomizations, a.render.spp))
+      return kExitUsage;
     a.render.seed = a.seed.value_or(scene.seed);
     const Camera& camera = scene.buffers.globals.camera;
     a.budget.spp = a.render.spp ? a.render.spp : scene.spp;
@@ -188,8 +243,10 @@ int render_command(int argc, char** argv) {
                       a.render.seed, renderer->granularity(), camera.width,
                       camera.height};
     id.aov_count = scene.buffers.globals.integrator.aov_count;
-    FilmState film = a.resume.empty() ? empty_film(camera.width, camera.height, id.aov_count)
-                                      : read_checkpoint(a.resume, id);
+    id.pass_size = renderer->pass_size();
+    FilmState film = a.resume.empty()
+                         ? empty_film(camera.width, camera.height, id.aov_count, id.pass_size)
+                         : read_checkpoint(a.resume, id);
     if (film.samples > a.budget.spp)
       throw CheckpointError(a.resume + ": holds " + std::to_string(film.samples) +
                             " spp, more than the " + std::to_string(a.budget.spp) + " asked for");
@@ -204,10 +261,11 @@ int render_command(int argc, char** argv) {
         [&signals] { return signals.raised(); });
     bar.finish();
     RenderResult result = film_result(film, *renderer);
+    const std::string sampler = sampler_name(scene.buffers.globals.sampler_params.type);
     std::map<std::string, std::string> metadata = {
         {"twinray:scene", a.scene},
         {"twinray:integrator", scene.integrator_name},
-        {"twinray:sampler", sampler_name(scene.buffers.globals.sampler_params.type)},
+        {"twinray:sampler", sampler},
         {"twinray:version", TWINRAY_VERSION},
         {"twinray:stopped", stop_reason_name(outcome.stop)},
         {"twinray:estimated_error", std::to_string(outcome.error)}};
@@ -215,6 +273,10 @@ int render_command(int argc, char** argv) {
       metadata["twinray:sample_count_rounding"] = scene.sample_count_note;
     write_result(result, paths, metadata, scene.film_half, scene.aov_channels);
     print_summary(result, paths, outcome, scene.sample_count_note);
+    if (a.randomizations > 0 && result.pass_size > 0)
+      std::printf("twinray: --randomizations %u: %u independent passes of %u samples (%s)\n",
+                  a.randomizations, a.randomizations, result.pass_size, sampler.c_str());
+    warn_without_passes(result, sampler);
     return outcome.stop == StopReason::Interrupted ? kExitInterrupted : kExitOk;
   } catch (...) {
     return report_failure("twinray");

@@ -18,6 +18,7 @@
 #include "cpu_backend/bound_scene.h"
 #include "cpu_backend/embree_scene.h"
 #include "render/film_moments.h"
+#include "render/pass_size.h"
 
 namespace tr {
 namespace {
@@ -29,12 +30,19 @@ struct ThreadCounts {
   std::uint64_t rejected = 0;
 };
 
+// Adds one sample to a pixel's moments and, with passes (pass_size > 0), to its pass in progress.
+template <typename Vec3>
+void add_film_sample(FilmMoments& m, bool negative, const Vec3& L, uint pass_size) {
+  add_sample(negative ? m.negative : m.positive, L);
+  if (pass_size > 0u) add_to_pass(m.passes, negative ? -1.0 : 1.0, 1.0, L);
+}
+
 // Samples [first, first + count) of one pixel, in order, added to its moments in double
-// (render/film_moments.h).
+// (render/film_moments.h); sample i ends a pass when (i + 1) % pass_size == 0.
 // With AOVs (core/integrators/aov.h) the camera ray is traced before the integrator runs, and
 // its hit serves the integrator's first step.
 void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count, uint seed,
-                  FilmMoments& m, FilmMoments* aovs, ThreadCounts& counts) {
+                  uint pass_size, FilmMoments& m, FilmMoments* aovs, ThreadCounts& counts) {
   const Integrator it = scene_globals().integrator;
   for (uint i = first; i < first + count; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
@@ -45,11 +53,9 @@ void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count,
       ++counts.rays;
       camera_hit_pending = true;
       AovPoint a = aov_point(s.ray, camera_hit);
-      for (uint k = 0; k < it.aov_count; ++k) {
-        FilmMoments& am = aovs[k];
-        add_sample(integrator_negative(s) ? am.negative : am.positive,
-                   aov_value(scene_aov_type(k), a));
-      }
+      for (uint k = 0; k < it.aov_count; ++k)
+        add_film_sample(aovs[k], integrator_negative(s), aov_value(scene_aov_type(k), a),
+                        pass_size);
     }
     while (integrator_alive(s)) {
       Hit hit = camera_hit_pending ? camera_hit : accel.intersect(s.ray);
@@ -66,7 +72,11 @@ void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count,
       ++counts.rejected;
       L = vec3(0.0f);
     }
-    add_sample(integrator_negative(s) ? m.negative : m.positive, L);
+    add_film_sample(m, integrator_negative(s), L, pass_size);
+    if (pass_size > 0u && (i + 1u) % pass_size == 0u) {
+      end_pass(m.passes);
+      for (uint k = 0; k < it.aov_count; ++k) end_pass(aovs[k].passes);
+    }
   }
 }
 
@@ -80,6 +90,7 @@ class CpuRenderer final : public Renderer {
       : threads_(options.threads ? int(options.threads) : tbb::info::default_concurrency()),
         limit_(tbb::global_control::max_allowed_parallelism, size_t(threads_)),
         seed_(options.seed),
+        pass_size_(sampler_pass_size(scene.buffers.globals.sampler_params)),
         binding_(scene.buffers) {
     auto start = std::chrono::steady_clock::now();
     accel_ = std::make_unique<EmbreeScene>(scene.buffers);
@@ -99,7 +110,7 @@ class CpuRenderer final : public Renderer {
           ThreadCounts& local = counts.local();
           for (uint y = tile.rows().begin(); y != tile.rows().end(); ++y)
             for (uint x = tile.cols().begin(); x != tile.cols().end(); ++x)
-              render_pixel(*accel_, uvec2(x, y), first, count, seed_,
+              render_pixel(*accel_, uvec2(x, y), first, count, seed_, film.pass_size,
                            film.pixels[size_t(y) * film.width + x],
                            film.aovs.data() + (size_t(y) * film.width + x) * film.aov_count, local);
           std::uint64_t now = done +=
@@ -121,6 +132,7 @@ class CpuRenderer final : public Renderer {
   }
 
   uint granularity() const override { return 1; }
+  uint pass_size() const override { return pass_size_; }
   std::string backend() const override { return "cpu"; }
   std::string device() const override {
     return "Embree " + std::string(RTC_VERSION_STRING) + ", " + std::to_string(threads_) +
@@ -132,6 +144,7 @@ class CpuRenderer final : public Renderer {
   int threads_;
   tbb::global_control limit_;
   uint seed_;
+  uint pass_size_;
   ScopedSceneBinding binding_;
   std::unique_ptr<EmbreeScene> accel_;
   double build_seconds_ = 0.0;

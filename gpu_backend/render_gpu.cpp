@@ -14,6 +14,7 @@
 #include "gpu_backend/variance_merge.h"
 #include "gpu_backend/vk_device.h"
 #include "gpu_backend/vk_instance.h"
+#include "render/pass_size.h"
 #include "spirv/raygen.h"
 
 namespace tr {
@@ -32,10 +33,18 @@ double seconds_since(Clock::time_point t) {
 // holds about 2^20 samples on a CPU device (lavapipe, ~0.5 Msamples/s: ~2 s) and 2^24 on a
 // GPU (H100, ~400 Msamples/s: ~45 ms; a GPU 20x slower still stays under Windows' 2 s
 // watchdog), and at most 256 per pixel (float Welford inside a batch).
-uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
+// With a correlated sampler's passes (pass_size > 0) the batch is the largest divisor of the
+// pass size within that: batches then never straddle a pass, and each pass's value is exact
+// from its batches' means (render/film_moments.h PassMoments).
+uint32_t batch_spp(const DeviceInfo& device, size_t pixels, uint32_t pass_size) {
   const double samples_per_dispatch = device.cpu ? 1048576.0 : 16777216.0;
-  return static_cast<uint32_t>(
+  const uint32_t most = static_cast<uint32_t>(
       std::clamp(std::floor(samples_per_dispatch / double(pixels)), 1.0, 256.0));
+  if (pass_size == 0) return most;
+  uint32_t best = 1;
+  for (uint32_t d = 1; d <= most; ++d)
+    if (pass_size % d == 0) best = d;
+  return best;
 }
 
 // The Vulkan device, pipeline, scene and buffers of one render, kept across passes.
@@ -47,7 +56,8 @@ class GpuRenderer final : public Renderer {
         height_(scene.buffers.globals.camera.height),
         pixels_(static_cast<size_t>(width_) * height_),
         aov_count_(scene.buffers.globals.integrator.aov_count),
-        seed_(options.seed) {
+        seed_(options.seed),
+        pass_size_(sampler_pass_size(scene.buffers.globals.sampler_params)) {
     if (width_ == 0 || height_ == 0) throw GpuError("the scene's film has no pixels");
     Clock::time_point phase = Clock::now();
     instance_ = std::make_unique<VulkanInstance>();
@@ -84,11 +94,12 @@ class GpuRenderer final : public Renderer {
                                         aov_batches_);
     timings_.build_seconds = seconds_since(phase);
     pending_build_seconds_ = timings_.build_seconds;
-    batch_size_ = batch_spp(device_info_, pixels_);
+    batch_size_ = batch_spp(device_info_, pixels_, pass_size_);
   }
 
   // Batches cover [k B, (k + 1) B) of the sample indices (B = granularity()), cut short only
-  // at the end of the range: a pass on those boundaries dispatches what one render would.
+  // at the end of the range: a pass on those boundaries dispatches what one render would, and
+  // no batch straddles a multiple of the sampler's pass size (which B divides).
   void render(uint32_t count, FilmState& film, const ProgressFn& progress) override {
     Clock::time_point phase = Clock::now();
     const uint32_t first = film.samples, end = film.samples + count;
@@ -111,10 +122,10 @@ class GpuRenderer final : public Renderer {
         timings_.first_dispatch_spp = slot.sample_count;
       }
       const PixelBatch* batch = static_cast<const PixelBatch*>(slot.readback.mapped());
-      merge_batches(batch, slot.sample_count, film.pixels);
+      merge_batches(batch, merged, slot.sample_count, film.pass_size, film.pixels);
       if (aov_count_ > 0)
-        merge_batches(static_cast<const PixelBatch*>(slot.aov_readback.mapped()), slot.sample_count,
-                      film.aovs);
+        merge_batches(static_cast<const PixelBatch*>(slot.aov_readback.mapped()), merged,
+                      slot.sample_count, film.pass_size, film.aovs);
       for (size_t p = 0; p < pixels_; ++p) {
         film.stats.rays += batch[p].rays;
         film.stats.rejected_nonfinite += batch[p].rejected;
@@ -136,6 +147,7 @@ class GpuRenderer final : public Renderer {
   }
 
   uint32_t granularity() const override { return batch_size_; }
+  uint32_t pass_size() const override { return pass_size_; }
   std::string backend() const override { return "gpu"; }
   std::string device() const override { return device_->name(); }
   uint32_t seed() const override { return seed_; }
@@ -191,6 +203,7 @@ class GpuRenderer final : public Renderer {
   size_t pixels_;
   uint32_t aov_count_;
   uint32_t seed_;
+  uint32_t pass_size_;
   DeviceInfo device_info_;
   std::unique_ptr<VulkanInstance> instance_;
   std::unique_ptr<VulkanDevice> device_;

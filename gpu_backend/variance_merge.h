@@ -14,14 +14,18 @@
 
 namespace tr {
 
-// Merges one batch of n_b samples per pixel into `pixels` (one FilmMoments per pixel).
-void merge_batches(const PixelBatch* batch, std::uint32_t n_b, std::vector<FilmMoments>& pixels);
+// Merges one batch of n_b samples per pixel, the sample indices [first, first + n_b), into
+// `pixels` (one FilmMoments per pixel). With pass_size > 0 (FilmState::pass_size) the batch must
+// lie inside one pass: it joins the pass in progress, and ends it when first + n_b is a multiple
+// of pass_size.
+void merge_batches(const PixelBatch* batch, std::uint32_t first, std::uint32_t n_b,
+                   std::uint32_t pass_size, std::vector<FilmMoments>& pixels);
 
 class MomentAccumulator {
  public:
   explicit MomentAccumulator(std::size_t pixels);
 
-  // Merges one batch of n_b samples per pixel.
+  // Merges one batch of n_b samples per pixel (without passes).
   void merge(const PixelBatch* batch, std::uint32_t n_b);
 
   std::uint64_t count() const { return count_; }

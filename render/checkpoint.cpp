@@ -11,7 +11,8 @@
 namespace tr {
 namespace {
 
-constexpr const char* kMagic = "twinray checkpoint 1";
+constexpr const char* kFormat = "twinray checkpoint ";
+constexpr const char* kVersion = "2";  // 2: the pass moments (render/film_moments.h PassMoments)
 
 void write_group(std::ostream& out, const SampleGroup& g) {
   out.write(reinterpret_cast<const char*>(&g.n), sizeof g.n);
@@ -25,9 +26,25 @@ void read_group(std::istream& in, SampleGroup& g) {
   in.read(reinterpret_cast<char*>(g.m2), sizeof g.m2);
 }
 
+void write_moments(std::ostream& out, const FilmMoments& m) {
+  write_group(out, m.positive);
+  write_group(out, m.negative);
+  write_group(out, m.passes.values);
+  out.write(reinterpret_cast<const char*>(&m.passes.signs), sizeof m.passes.signs);
+  out.write(reinterpret_cast<const char*>(m.passes.sum), sizeof m.passes.sum);
+}
+
+void read_moments(std::istream& in, FilmMoments& m) {
+  read_group(in, m.positive);
+  read_group(in, m.negative);
+  read_group(in, m.passes.values);
+  in.read(reinterpret_cast<char*>(&m.passes.signs), sizeof m.passes.signs);
+  in.read(reinterpret_cast<char*>(m.passes.sum), sizeof m.passes.sum);
+}
+
 std::string header(const RenderIdentity& id, std::uint32_t samples) {
   std::ostringstream h;
-  h << kMagic << "\n"
+  h << kFormat << kVersion << "\n"
     << "build " << id.build << "\n"
     << "scene " << id.scene << "\n"
     << "backend " << id.backend << "\n"
@@ -36,6 +53,7 @@ std::string header(const RenderIdentity& id, std::uint32_t samples) {
     << "width " << id.width << "\n"
     << "height " << id.height << "\n"
     << "aovs " << id.aov_count << "\n"
+    << "pass_size " << id.pass_size << "\n"
     << "samples " << samples << "\n"
     << "end\n";
   return h.str();
@@ -59,10 +77,7 @@ void write_checkpoint(const std::string& path, const RenderIdentity& id, const F
     std::ofstream out(tmp.name(), std::ios::binary | std::ios::trunc);
     out << header(id, film.samples);
     for (const std::vector<FilmMoments>* moments : {&film.pixels, &film.aovs})
-      for (const FilmMoments& m : *moments) {
-        write_group(out, m.positive);
-        write_group(out, m.negative);
-      }
+      for (const FilmMoments& m : *moments) write_moments(out, m);
     const RenderStats& s = film.stats;
     out.write(reinterpret_cast<const char*>(&s.seconds), sizeof s.seconds);
     out.write(reinterpret_cast<const char*>(&s.samples), sizeof s.samples);
@@ -78,9 +93,13 @@ FilmState read_checkpoint(const std::string& path, const RenderIdentity& expecte
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CheckpointError(path + ": cannot open the checkpoint");
   std::string line;
-  if (!std::getline(in, line) || line != kMagic)
-    throw CheckpointError(path + ": not a twinray checkpoint (first line is not '" +
-                          std::string(kMagic) + "')");
+  const std::string magic = std::string(kFormat) + kVersion;
+  if (!std::getline(in, line) || line.compare(0, std::strlen(kFormat), kFormat) != 0)
+    throw CheckpointError(path + ": not a twinray checkpoint (first line is not '" + magic + "')");
+  if (line != magic)
+    throw CheckpointError(path + ": a checkpoint of format version " +
+                          line.substr(std::strlen(kFormat)) + ", this twinray reads version " +
+                          kVersion + " only (render again without --resume)");
   // The identity lines must read exactly as this render's header would.
   std::istringstream want(header(expected, 0));
   std::getline(want, line);
@@ -105,13 +124,11 @@ FilmState read_checkpoint(const std::string& path, const RenderIdentity& expecte
                             want_line.substr(key.size() + 1) + "'");
     }
   }
-  FilmState film = empty_film(expected.width, expected.height, expected.aov_count);
+  FilmState film =
+      empty_film(expected.width, expected.height, expected.aov_count, expected.pass_size);
   film.samples = samples;
   for (std::vector<FilmMoments>* moments : {&film.pixels, &film.aovs})
-    for (FilmMoments& m : *moments) {
-      read_group(in, m.positive);
-      read_group(in, m.negative);
-    }
+    for (FilmMoments& m : *moments) read_moments(in, m);
   RenderStats& s = film.stats;
   in.read(reinterpret_cast<char*>(&s.seconds), sizeof s.seconds);
   in.read(reinterpret_cast<char*>(&s.samples), sizeof s.samples);

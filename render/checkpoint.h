@@ -1,10 +1,12 @@
 // Checkpoints of a render in progress (`twinray render --checkpoint/--resume`): the FilmState
 // and what it belongs to. A checkpoint is written atomically (io/temp_file.h), so a crash while
 // writing leaves the previous one intact. Format (native byte order, read back by the same
-// build only): the line "twinray checkpoint 1", one "key value" line per identity field and
-// for the sample count, the line "end", then per pixel the 14 doubles of its FilmMoments
-// (positive n, mean[3], m2[3], then negative), the same for each FilmState::aovs entry, and
-// the statistics (seconds as a double, samples, rays, rejected as uint64).
+// build only): the line "twinray checkpoint 2", one "key value" line per identity field and
+// for the sample count, the line "end", then per pixel the 25 doubles of its FilmMoments
+// (positive n, mean[3], m2[3], then negative, then the pass values' n, mean[3], m2[3] and the
+// pass in progress's signs and sum[3]), the same for each FilmState::aovs entry, and the
+// statistics (seconds as a double, samples, rays, rejected as uint64). Version 1 (without the
+// passes) is refused.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +31,7 @@ struct RenderIdentity {
   std::uint32_t granularity = 1;  // Renderer::granularity()
   std::uint32_t width = 0, height = 0;
   std::uint32_t aov_count = 0;  // Mitsuba `aov` output variables (FilmState::aov_count)
+  std::uint32_t pass_size = 0;  // Renderer::pass_size() (FilmState::pass_size)
 };
 
 // FNV-1a 64 of this executable's file (/proc/self/exe), 16 hex digits.

@@ -6,7 +6,9 @@
 // whose relative error is unbounded, from deciding alone: it is the metric `twinray converge`
 // reports, so `render --target-error E` stops where converge would measure about E^2.
 // Below kMinErrorSamples samples per pixel the variances are too noisy to stop on (at 1 they
-// are all 0), and the estimate is infinite.
+// are all 0), and the estimate is infinite. With a correlated sampler the variances are those of
+// its passes (render/error_estimate.h), with K - 1 degrees of freedom: below kMinErrorPasses
+// completed passes the estimate is infinite (before 2 it would be no error estimate at all).
 #pragma once
 
 #include <cmath>
@@ -17,9 +19,12 @@
 namespace tr {
 
 constexpr std::uint32_t kMinErrorSamples = 16;
+constexpr std::uint32_t kMinErrorPasses = 16;
 
 inline double estimated_relative_error(const FilmState& film) {
   if (film.samples < kMinErrorSamples || film.pixels.empty()) return INFINITY;
+  if (film.pass_size > 0 && completed_passes(film.pass_size, film.samples) < kMinErrorPasses)
+    return INFINITY;
   std::vector<double> mean, variance;
   develop_film(film, mean, variance);
   double sum = 0.0;

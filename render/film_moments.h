@@ -4,6 +4,10 @@
 // time (Chan, Golub & LeVeque 1979, eq. 2.1), and developed into the pixel's value and
 // per-sample variance. Without negative samples (filters without negative lobes) the value is
 // the positive samples' mean and the variance M2 / (n - 1), exactly.
+// With a correlated sampler (core/rng.h: passes of sample_count stratified or low-discrepancy
+// points, each pass an independent randomization) the samples of a pass are not independent;
+// PassMoments keeps, beside them, the Welford moments of the completed passes' pixel values
+// and the sums of the pass in progress (render/error_estimate.h turns them into the error).
 #pragma once
 
 #include <cstdint>
@@ -16,8 +20,17 @@ struct SampleGroup {
   double m2[3] = {0.0, 0.0, 0.0};
 };
 
+// One pixel's passes: the values of the completed ones (n: how many) and, for the pass in
+// progress, sum(s) and sum(s L) over its samples (s = +-1 as in develop).
+struct PassMoments {
+  SampleGroup values;
+  double signs = 0.0;
+  double sum[3] = {0.0, 0.0, 0.0};
+};
+
 struct FilmMoments {
   SampleGroup positive, negative;
+  PassMoments passes;  // untouched (all zero) for samplers without passes (independent)
 };
 
 // Welford's update with the sample L.
@@ -42,6 +55,24 @@ void merge_batch(SampleGroup& g, double n_b, const Vec3& mean_b, const Vec3& m2_
     g.m2[c] += double(m2_b[c]) + delta * delta * g.n * n_b / n;
   }
   g.n = n;
+}
+
+// Adds n_b samples of sign s and mean `mean_b` to the pass in progress (n_b = 1: one sample).
+template <typename Vec3>
+void add_to_pass(PassMoments& p, double s, double n_b, const Vec3& mean_b) {
+  p.signs += s * n_b;
+  for (int c = 0; c < 3; ++c) p.sum[c] += s * n_b * double(mean_b[c]);
+}
+
+// Ends the pass in progress: its value sum(s L) / sum(s), divided as develop divides (by 1
+// where the sum of signs is 0), joins the completed values (Welford), and the sums restart.
+inline void end_pass(PassMoments& p) {
+  const double divisor = p.signs != 0.0 ? p.signs : 1.0;
+  double value[3];
+  for (int c = 0; c < 3; ++c) value[c] = p.sum[c] / divisor;
+  add_sample(p.values, value);
+  p.signs = 0.0;
+  for (double& s : p.sum) s = 0.0;
 }
 
 // The pixel's value sum(s L) / sum(s) (s = +-1; like hdrfilm's division by the weight channel,

@@ -38,12 +38,15 @@ struct RenderStats {
 // variance of its estimate, accumulated in double (render/film_moments.h). For the box filter
 // and filters without negative lobes these are the sample mean and the unbiased per-sample
 // variance (Mitsuba `moment` semantics); with negative lobes, the ratio estimate and its
-// delta-method variance.
+// delta-method variance. With a correlated sampler rendered in 2 or more passes the variance
+// is instead S times the variance of the pass values (render/error_estimate.h): in every case
+// variance / spp estimates the variance of the pixel's value.
 struct RenderResult {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::uint32_t spp = 0;
   std::uint32_t seed = 0;
+  std::uint32_t pass_size = 0;  // FilmState::pass_size: samples of a pass, 0 without passes
   std::vector<double> mean;
   std::vector<double> variance;
   // Mitsuba `aov`: per pixel, 3 values for each of aov_count output variables (value and

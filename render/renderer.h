@@ -22,6 +22,9 @@ class Renderer {
   // sample) give the image of one uninterrupted render, bit for bit.
   virtual std::uint32_t granularity() const = 0;
 
+  // Samples of one pass of the scene's sampler (FilmState::pass_size), 0 without passes.
+  virtual std::uint32_t pass_size() const = 0;
+
   virtual std::string backend() const = 0;  // "cpu" or "gpu"
   virtual std::string device() const = 0;   // e.g. "Embree 3.13.5, 2 threads"
   virtual std::uint32_t seed() const = 0;
@@ -34,6 +37,7 @@ inline RenderResult film_result(const FilmState& film, const Renderer& renderer)
   r.height = film.height;
   r.spp = film.samples;
   r.seed = renderer.seed();
+  r.pass_size = film.pass_size;
   develop_film(film, r.mean, r.variance);
   r.aov_count = film.aov_count;
   develop_aovs(film, r.aov_mean, r.aov_variance);
@@ -47,7 +51,7 @@ inline RenderResult film_result(const FilmState& film, const Renderer& renderer)
 inline RenderResult render_all(Renderer& renderer, std::uint32_t width, std::uint32_t height,
                                std::uint32_t spp, const ProgressFn& progress,
                                std::uint32_t aov_count = 0) {
-  FilmState film = empty_film(width, height, aov_count);
+  FilmState film = empty_film(width, height, aov_count, renderer.pass_size());
   renderer.render(spp, film, progress);
   return film_result(film, renderer);
 }

@@ -1,6 +1,7 @@
 #include "render/write_result.h"
 
 #include "io/image.h"
+#include "render/error_estimate.h"
 
 namespace tr {
 namespace {
@@ -56,12 +57,15 @@ void write_result(const RenderResult& result, const OutputPaths& paths,
   meta["twinray:device"] = result.device;
   meta["twinray:seconds"] = std::to_string(result.stats.seconds);
   meta["twinray:rejected_nonfinite"] = std::to_string(result.stats.rejected_nonfinite);
+  meta["twinray:variance_estimate"] = variance_estimate_name(result.pass_size, result.spp);
 
   Image mean = with_aovs(result, result.mean, result.aov_mean, aov_channels);
   mean.metadata = meta;
   Image var = with_aovs(result, result.variance, result.aov_variance, aov_channels);
   var.metadata = meta;
-  var.metadata["twinray:content"] = "per-sample variance of each pixel's samples";
+  var.metadata["twinray:content"] =
+      "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
+      "(twinray:variance_estimate says from what)";
   write_exr(paths.image, mean, half);
   write_exr(paths.variance, var, half);
   write_png_srgb(paths.preview, to_image(result, result.mean));

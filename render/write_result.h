@@ -1,7 +1,8 @@
 // Writes a render's outputs: OUT.exr (mean, RGB, with metadata), OUT_var.exr (the
 // per-sample variance, Mitsuba `moment` semantics, same naming as Mitsuba's test
-// references) and OUT.png (sRGB preview). Each file is written atomically: a reader sees the
-// old file or the complete new one, never a partial one.
+// references; for a correlated sampler's passes, render/error_estimate.h's estimate, named by
+// the attribute twinray:variance_estimate) and OUT.png (sRGB preview). Each file is written
+// atomically: a reader sees the old file or the complete new one, never a partial one.
 #pragma once
 
 #include <map>
@@ -20,7 +21,8 @@ struct OutputPaths {
 
 OutputPaths output_paths(const std::string& exr_path);
 
-// Metadata written as EXR attributes: spp, seed, backend, device, time, version, plus `extra`.
+// Metadata written as EXR attributes: spp, seed, backend, device, time, version, the variance
+// estimate (render/error_estimate.h variance_estimate_name), plus `extra`.
 // `half`: both EXRs in 16-bit floats (the film's component_format float16), else 32-bit.
 // `aov_channels` (Scene::aov_channels): the names of the AOV channels both EXRs carry after
 // R, G, B, each variable's first channels of RenderResult::aov_mean/aov_variance.
