@@ -104,6 +104,49 @@ TEST(GpuVarianceMerge, SignedSamplesDevelopToTheRatioEstimate) {
   EXPECT_NEAR(cpu_mean[2], 1.0, 1e-12);
 }
 
+// Passes (render/film_moments.h PassMoments): batches dividing the pass size, each the shader's
+// per-sign float Welford, give each pass the value the CPU's per-sample sums give it, sum(s L) /
+// sum(s), and end it on the multiples of the pass size only.
+TEST(GpuVarianceMerge, BatchesInsidePassesGiveThePassValues) {
+  std::mt19937 gen(5);
+  std::lognormal_distribution<float> radiance(0.0f, 1.0f);
+  std::bernoulli_distribution negative(0.2);
+  const uint32_t pass_size = 12, batch_sizes[] = {4, 4, 4, 6, 6, 3, 3, 3, 3, 12, 2, 2};
+  std::vector<FilmMoments> gpu(1);
+  FilmMoments cpu;
+  uint32_t first = 0;
+  for (uint32_t n : batch_sizes) {
+    PixelBatch batch{};
+    for (uint32_t i = 0; i < n; ++i) {
+      const float x = radiance(gen);
+      const bool neg = negative(gen);
+      const vec3 v(x, 3.0f * x, 1.0f);
+      add_sample(neg ? cpu.negative : cpu.positive, v);
+      add_to_pass(cpu.passes, neg ? -1.0 : 1.0, 1.0, v);
+      if ((first + i + 1) % pass_size == 0) end_pass(cpu.passes);
+      vec3& mean = neg ? batch.mean_negative : batch.mean;
+      vec3& m2 = neg ? batch.m2_negative : batch.m2;
+      batch.negative += neg ? 1u : 0u;
+      const float count = float(neg ? batch.negative : i + 1 - batch.negative);
+      const vec3 delta = v - mean;
+      mean += delta / count;
+      m2 += delta * (v - mean);
+    }
+    merge_batches(&batch, first, n, pass_size, gpu);
+    first += n;
+  }
+  const PassMoments& g = gpu[0].passes;
+  ASSERT_EQ(g.values.n, 4.0);
+  ASSERT_EQ(cpu.passes.values.n, 4.0);
+  for (int c = 0; c < 3; ++c) {
+    const double cpu_mean = cpu.passes.values.mean[c], cpu_m2 = cpu.passes.values.m2[c];
+    EXPECT_NEAR(g.values.mean[c], cpu_mean, 1e-5 * std::abs(cpu_mean)) << c;
+    EXPECT_NEAR(g.values.m2[c], cpu_m2, 1e-4 * cpu_m2 + 1e-12) << c;
+    EXPECT_NEAR(g.sum[c], cpu.passes.sum[c], 1e-5 * std::abs(cpu.passes.sum[c]) + 1e-12) << c;
+  }
+  EXPECT_EQ(g.signs, cpu.passes.signs);  // the pass in progress: 4 samples
+}
+
 TEST(GpuVarianceMerge, SingleSampleHasZeroVariance) {
   MomentAccumulator acc(2);
   PixelBatch batch[2] = {};
