@@ -1,0 +1,76 @@
+// The error estimate of correlated samplers on the GPU backend (render/error_estimate.h): its
+// batches divide the sampler's pass, a render split on batch boundaries keeps the pass moments
+// of an unsplit one bit for bit (so a resumed render is the uninterrupted one), and the pass
+// estimate agrees with the CPU's, which draws the same numbers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cpu_backend/render_cpu.h"
+#include "gpu_backend/render_gpu.h"
+#include "scenes/load_scene.h"
+#include "scenes/sampler.h"
+
+namespace tr {
+namespace {
+
+Scene cornell_box(uint sampler, uint requested) {
+  LoadOptions load;
+  load.defines = {{"width", "8"}, {"height", "8"}, {"max_depth", "3"}};
+  Scene scene =
+      load_scene(std::string(TWINRAY_SOURCE_DIR) + "/scenes/cornell-box/cornell_box.xml", load);
+  set_sampler(scene, sampler, requested, true);
+  return scene;
+}
+
+FilmState render_ranges(Renderer& renderer, const std::vector<uint32_t>& ranges) {
+  FilmState film = empty_film(8, 8, 0, renderer.pass_size());
+  for (uint32_t count : ranges) renderer.render(count, film, {});
+  return film;
+}
+
+// lavapipe's batches at 8x8 are 256 spp: passes of 512 take two.
+TEST(GpuPassEstimate, SplitOnBatchesKeepsThePassMomentsBitForBit) {
+  const Scene scene = cornell_box(SAMPLER_ZSOBOL, 512);
+  RenderOptions options;
+  options.seed = 4;
+  std::unique_ptr<Renderer> gpu = make_gpu_renderer(scene, options);
+  ASSERT_EQ(gpu->pass_size(), 512u);
+  const uint32_t g = gpu->granularity();
+  ASSERT_EQ(512u % g, 0u) << "batches of " << g << " straddle passes of 512";
+  const FilmState whole = render_ranges(*gpu, {1024});
+  const FilmState split = render_ranges(*gpu, {g, 512 - g, 512});
+  ASSERT_EQ(whole.pixels[0].passes.values.n, 2.0);
+  for (std::size_t p = 0; p < whole.pixels.size(); ++p)
+    ASSERT_EQ(std::memcmp(&whole.pixels[p], &split.pixels[p], sizeof(FilmMoments)), 0) << p;
+
+  // The CPU draws the same numbers: the estimates agree up to float rounding.
+  std::unique_ptr<Renderer> cpu_renderer = make_cpu_renderer(scene, options);
+  const FilmState cpu = render_ranges(*cpu_renderer, {1024});
+  std::vector<double> gpu_mean, gpu_var, cpu_mean, cpu_var;
+  develop_film(whole, gpu_mean, gpu_var);
+  develop_film(cpu, cpu_mean, cpu_var);
+  double gpu_sum = 0.0, cpu_sum = 0.0;
+  for (std::size_t i = 0; i < gpu_var.size(); ++i) {
+    gpu_sum += gpu_var[i];
+    cpu_sum += cpu_var[i];
+  }
+  EXPECT_NEAR(gpu_sum, cpu_sum, 1e-3 * cpu_sum);
+}
+
+// Orthogonal passes of 17^2 = 289: the batch is the largest divisor of the pass within 256.
+TEST(GpuPassEstimate, BatchesDivideThePass) {
+  const Scene scene = cornell_box(SAMPLER_ORTHOGONAL, 289);
+  std::unique_ptr<Renderer> renderer = make_gpu_renderer(scene, RenderOptions{});
+  EXPECT_EQ(renderer->pass_size(), 289u);
+  EXPECT_EQ(renderer->granularity(), 17u);
+  const FilmState film = render_ranges(*renderer, {289 * 2});
+  EXPECT_EQ(film.pixels[0].passes.values.n, 2.0);
+}
+
+}  // namespace
+}  // namespace tr
