@@ -23,7 +23,8 @@ Compares test image A with reference image B (EXR, PNG, JPEG, HDR, PFM, PPM, BMP
 channels).
 
 Inputs of the statistical tests:
-  --var-a FILE          per-sample variance of A (e.g. a Mitsuba `moment` variance image)
+  --var-a FILE          per-sample variance of A (e.g. a Mitsuba `moment` variance image, or
+                        twinray's OUT_var.exr: see its twinray:variance_estimate)
   --var-b FILE          per-sample variance of B
   --spp-a N             samples per pixel of A
   --spp-b N             samples per pixel of B (32000 for the Mitsuba test references)

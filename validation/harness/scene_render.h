@@ -14,7 +14,10 @@ namespace tr {
 
 struct SceneRender {
   RenderResult result;
-  RgbImage mean, variance;  // variance: per sample (Mitsuba `moment` semantics)
+  // variance: RenderResult::variance, per sample (Mitsuba `moment` semantics) or, for a
+  // correlated sampler in 2 or more passes, their estimate (render/error_estimate.h); divided
+  // by spp it estimates the variance of the pixel's value either way.
+  RgbImage mean, variance;
 };
 
 // load_scene with the entry's defines; throws SceneError.
