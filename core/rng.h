@@ -13,10 +13,10 @@
 // hash of (pixel, ~pass, dimension, seed) (~pass keeps it apart from the per-sample hashes of
 // the first 2^31 samples), and the per-sample hash supplies the jitter. A 2D draw is one 2D
 // point of the sampler, so 1D and 2D draws consume the dimension counter as `independent`.
-// `sobol` (core/samplers/sobol.h) hashes the same (pixel, ~pass, dimension, seed) into the
-// scrambles of its per-pixel sequence; `zsobol` (core/samplers/zsobol.h) correlates the pixels
-// instead: its permutations and scrambles are fixed per (pass, dimension, seed) for the whole
-// image.
+// `sobol` (core/samplers/sobol.h) hashes (pixel, ~pass, seed) once a sample into Rng.key, and
+// the key and the draw into the scrambles of its per-pixel sequence; `zsobol`
+// (core/samplers/zsobol.h) correlates the pixels instead: its permutations and scrambles are fixed
+// per (pass, dimension, seed) for the whole image.
 #ifndef TWINRAY_CORE_RNG_H
 #define TWINRAY_CORE_RNG_H
 
@@ -35,6 +35,7 @@ struct Rng {
   uint seed;
   uint dimension;  // next counter value
   Sampler sampler_params;
+  uint key;  // sobol: the hash of (pixel, pass, seed) its draws' scrambles derive from
 };
 
 INLINE uvec4 pcg4d(uvec4 v) {
@@ -63,12 +64,17 @@ INLINE Rng rng_init(uint pixel, uint sample_index, uint seed) {
   r.sampler_params.jitter = 1u;
   r.sampler_params.inv_sample_count = 1.0f;
   r.sampler_params.inv_resolution = vec2(1.0f);
+  r.key = 0u;
   return r;
 }
 
 INLINE Rng rng_init_sampler(uint pixel, uint sample_index, uint seed, Sampler params) {
   Rng r = rng_init(pixel, sample_index, seed);
   r.sampler_params = params;
+  if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && params.type == SAMPLER_SOBOL) {
+    uint pass = sample_index >> uint(findMSB(params.sample_count));  // a power of 2
+    r.key = pcg4d(uvec4(pixel, ~pass, 0xfffffffeu, seed)).x;
+  }
   return r;
 }
 
@@ -131,9 +137,9 @@ INLINE float rng_next_1d(INOUT(Rng) r) {
   }
   if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && type == SAMPLER_SOBOL) {
     uint draw = r.dimension;
-    uvec4 pass_bits = rng_pass_bits(r);
     r.dimension += 1u;
-    return sobol_1d(r.sampler_params, rng_index_in_pass(r), draw, pass_bits);
+    return sobol_1d(r.sampler_params, r.sample_index & (r.sampler_params.sample_count - 1u), draw,
+                    r.key);
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);
@@ -176,9 +182,9 @@ INLINE vec2 rng_next_2d(INOUT(Rng) r) {
   }
   if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && type == SAMPLER_SOBOL) {
     uint draw = r.dimension;
-    uvec4 pass_bits = rng_pass_bits(r);
     r.dimension += 1u;
-    return sobol_2d(r.sampler_params, rng_index_in_pass(r), draw, pass_bits);
+    return sobol_2d(r.sampler_params, r.sample_index & (r.sampler_params.sample_count - 1u), draw,
+                    r.key);
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);

@@ -33,9 +33,12 @@ float scene_filter_cdf(uint k);
 // The type of the `aov` integrator's output variable i (Integrator.aov_types), read in place
 // for the same reason.
 uint scene_aov_type(uint i);
-// Column i of the Sobol generator matrices (core/samplers/sobol_matrices.h), read in place: as a
-// constant array indexed in the shader, lavapipe copied all of it into every invocation.
+#ifndef __cplusplus
+// Column i of the Sobol generator matrices (core/samplers/sobol_matrices.h), from a buffer: as a
+// constant array indexed in the shader, lavapipe copied all of it into every invocation. The
+// host reads the array in place (inline there).
 uint scene_sobol_column(uint i);
+#endif
 
 TR_NAMESPACE_END
 

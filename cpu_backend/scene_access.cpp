@@ -1,7 +1,6 @@
 // core/scene_access.h over the host vectors of the bound SceneBuffers.
 #include "core/scene_access.h"
 
-#include "core/samplers/sobol_matrices.h"
 #include "cpu_backend/bound_scene.h"
 
 namespace tr {
@@ -24,7 +23,6 @@ vec3 scene_normal(uint v) { return vec3(g_buffers->normals[v]); }
 vec2 scene_uv(uint v) { return g_buffers->uvs[v]; }
 uint scene_index(uint i) { return g_buffers->indices[i]; }
 uint scene_attribute(uint i) { return g_buffers->attributes[i]; }
-uint scene_sobol_column(uint i) { return SOBOL_MATRICES[i]; }
 float scene_filter_table(uint i) { return g_buffers->globals.camera.filter_table[i >> 2u][i & 3u]; }
 uint scene_aov_type(uint i) { return g_buffers->globals.integrator.aov_types[i >> 2u][i & 3u]; }
 float scene_filter_cdf(uint k) { return g_buffers->globals.camera.filter_cdf[k >> 2u][k & 3u]; }

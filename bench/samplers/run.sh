@@ -9,7 +9,8 @@
 #
 # usage: bench/samplers/run.sh [OUT]      (default OUT: bench-samplers)
 # env:   TWINRAY (build/app/twinray), REF_SPP (65536), REPEATS (8), THREADS (all cores),
-#        MAX_SPP (1024; smaller for a quick try), SCENES ("direct_lit cornell_box")
+#        MAX_SPP (1024; smaller for a quick try), SCENES ("direct_lit cornell_box"),
+#        SAMPLERS (all: "independent stratified multijitter orthogonal ldsampler zsobol sobol")
 # Writes OUT/<scene>/{reference.exr, convergence.csv, convergence.svg, time_to_error.csv} and
 # prints relMSE at 64 and 1024 spp per sampler (mean +- standard error, seconds per render).
 set -euo pipefail
@@ -19,7 +20,7 @@ twinray=${TWINRAY:-$root/build/app/twinray}
 ref_spp=${REF_SPP:-65536} repeats=${REPEATS:-8} max_spp=${MAX_SPP:-1024}
 threads=()
 [ -n "${THREADS:-}" ] && threads=(--threads "$THREADS")
-samplers=(independent stratified multijitter orthogonal ldsampler zsobol)
+read -r -a samplers <<<"${SAMPLERS:-independent stratified multijitter orthogonal ldsampler zsobol sobol}"
 
 bench() {  # bench NAME SCENE DEFINES...
   local name=$1 scene=$2

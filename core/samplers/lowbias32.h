@@ -1,7 +1,6 @@
 // lowbias32, a 32-bit integer hash of low bias found by search (Wellons, "Prospecting for Hash
-// Functions", 2018): every output bit depends on every input bit. pcg4d's (core/rng.h) low
-// output bits depend on few input bits; a hash whose low bits matter (a seed of
-// core/samplers/owen_scramble.h, whose top digit is the seed's lowest bit) goes through this.
+// Functions", 2018): every output bit depends on every input bit. zsobol hashes its digits with
+// it, sobol its per-dimension scramble seeds (core/samplers/sobol.h).
 #ifndef TWINRAY_CORE_SAMPLERS_LOWBIAS32_H
 #define TWINRAY_CORE_SAMPLERS_LOWBIAS32_H
 

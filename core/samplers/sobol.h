@@ -32,40 +32,52 @@
 
 TR_NAMESPACE_BEGIN
 
-// Point `index` of Sobol dimension `dimension`, its digits reversed (bit j the 2^-(j+1) digit).
-INLINE uint sobol_reversed_bits(uint index, uint dimension) {
-  uint v = 0u;
+// Point `index` (below 2^digits) of Sobol dimensions `dimension` and `dimension` + 1, their
+// digits reversed (bit j the 2^-(j+1) digit). A fixed trip count and masks instead of branches:
+// the index's bits are random, so branches on them would be mispredicted half the time.
+INLINE uvec2 sobol_reversed_bits(uint index, uint dimension, uint digits) {
+  uvec2 v = uvec2(0u);
   uint column = dimension * SOBOL_COLUMNS;
-  for (; index != 0u; index >>= 1u) {
-    if ((index & 1u) != 0u) v ^= scene_sobol_column(column);
-    column += 1u;
+  for (uint k = 0u; k < digits; ++k) {
+    uint mask = 0u - ((index >> k) & 1u);
+    v.x ^= scene_sobol_column(column + k) & mask;
+    v.y ^= scene_sobol_column(column + SOBOL_COLUMNS + k) & mask;
   }
   return v;
 }
 
-INLINE float sobol_scrambled(uint index, uint dimension, uint seed) {
-  uint scrambled = owen_scramble_reversed(sobol_reversed_bits(index, dimension), lowbias32(seed));
-  return ld_bits_to_float(van_der_corput_bits(scrambled));
+// The scramble seed of Sobol dimension `counter` of the pass whose key is `key` (at ~draw: the
+// permutation of a padded draw): the counter hashed with the key, as SplitMix hashes its counter
+// (Steele, Lea & Flood, "Fast Splittable Pseudorandom Number Generators", OOPSLA 2014), here
+// through lowbias32 (an XOR of key and counter instead left neighbouring seeds correlated:
+// Uniformity.ChiSquare in tests/samplers caught it).
+INLINE uint sobol_seed(uint key, uint counter) { return lowbias32(key + counter * 0x9e3779b9u); }
+
+INLINE float sobol_scramble(uint reversed, uint seed) {
+  return ld_bits_to_float(van_der_corput_bits(owen_scramble_reversed(reversed, seed)));
 }
 
-// The first Sobol dimension of draw `draw`; past the table, `index` is permuted by `perm`.
-INLINE uint sobol_dimension(Sampler s, uint draw, uint perm, INOUT(uint) index) {
+// The first Sobol dimension of draw `draw`; past the table, `index` is permuted.
+INLINE uint sobol_dimension(Sampler s, uint draw, uint key, INOUT(uint) index) {
   uint dimension = 2u * draw;
   if (dimension < SOBOL_DIMENSIONS) return dimension;
-  index = permute_kensler(index, s.sample_count, perm);
+  index = permute_kensler(index, s.sample_count, sobol_seed(key, ~draw));
   return 2u + (dimension - 2u) % (SOBOL_DIMENSIONS - 2u);
 }
 
-// index: the sample's index within its pass; bits: the hash of (pixel, pass, draw, seed).
-INLINE float sobol_1d(Sampler s, uint index, uint draw, uvec4 bits) {
-  uint dimension = sobol_dimension(s, draw, bits.z, index);
-  return sobol_scrambled(index, dimension, bits.x);
+// index: the sample's index within its pass; key: Rng.key, the hash of (pixel, pass, seed). A
+// 1D draw is the first coordinate of the 2D draw.
+INLINE vec2 sobol_2d(Sampler s, uint index, uint draw, uint key) {
+  uint dimension = sobol_dimension(s, draw, key, index);
+  uvec2 v = sobol_reversed_bits(index, dimension, uint(findMSB(s.sample_count)));
+  return vec2(sobol_scramble(v.x, sobol_seed(key, 2u * draw)),
+              sobol_scramble(v.y, sobol_seed(key, 2u * draw + 1u)));
 }
 
-INLINE vec2 sobol_2d(Sampler s, uint index, uint draw, uvec4 bits) {
-  uint dimension = sobol_dimension(s, draw, bits.z, index);
-  return vec2(sobol_scrambled(index, dimension, bits.x),
-              sobol_scrambled(index, dimension + 1u, bits.y));
+INLINE float sobol_1d(Sampler s, uint index, uint draw, uint key) {
+  uint dimension = sobol_dimension(s, draw, key, index);
+  uint v = sobol_reversed_bits(index, dimension, uint(findMSB(s.sample_count))).x;
+  return sobol_scramble(v, sobol_seed(key, 2u * draw));
 }
 
 TR_NAMESPACE_END

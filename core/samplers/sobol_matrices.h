@@ -18,8 +18,8 @@ TR_NAMESPACE_BEGIN
 const uint SOBOL_DIMENSIONS = 128u;
 const uint SOBOL_COLUMNS = 24u;
 
-// The table lives on the host: core/ reads it through scene_sobol_column (core/scene_access.h),
-// from this array on the CPU and from the buffer the GPU backend uploads it to.
+// The table lives on the host: core/ reads it through scene_sobol_column, below on the CPU, from
+// the buffer the GPU backend uploads it to in shaders (core/scene_access.h).
 #ifdef __cplusplus
 // clang-format off
 inline constexpr uint SOBOL_MATRICES[SOBOL_DIMENSIONS * SOBOL_COLUMNS] = {
@@ -537,6 +537,7 @@ inline constexpr uint SOBOL_MATRICES[SOBOL_DIMENSIONS * SOBOL_COLUMNS] = {
     0x00045da3u, 0x00087f44u, 0x0011c68cu, 0x0032a551u, 0x00659ee3u, 0x00ead5c3u
 };
 // clang-format on
+inline uint scene_sobol_column(uint i) { return SOBOL_MATRICES[i]; }
 #endif
 
 TR_NAMESPACE_END

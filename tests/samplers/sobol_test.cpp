@@ -118,13 +118,15 @@ uint t_value(const std::vector<std::vector<float>>& points, uint m) {
   return m;
 }
 
-// The same point set unscrambled, straight from the matrices.
-std::vector<std::vector<float>> unscrambled(uint n, const std::vector<uint>& dimensions) {
+// The same point set unscrambled, straight from the matrices (n = 2^m).
+std::vector<std::vector<float>> unscrambled(uint m, const std::vector<uint>& dimensions) {
   std::vector<std::vector<float>> points;
-  for (uint i = 0; i < n; ++i) {
+  for (uint i = 0; i < (1u << m); ++i) {
     std::vector<float> p;
-    for (uint d : dimensions)
-      p.push_back(ld_bits_to_float(van_der_corput_bits(sobol_reversed_bits(i, d))));
+    for (uint d : dimensions) {
+      uvec2 pair = sobol_reversed_bits(i, d & ~1u, m);  // dimensions 2k and 2k + 1
+      p.push_back(ld_bits_to_float(van_der_corput_bits((d & 1u) != 0u ? pair.y : pair.x)));
+    }
     points.push_back(p);
   }
   return points;
@@ -157,7 +159,7 @@ TEST(SobolNets, ScramblingKeepsTheTValue) {
       {{1, 2}, {2, 3, 4, 5}}, {{63}, {126, 127}}, {{64}, {2, 3}}, {{100}, {74, 75}}};
   for (const Projection& pr : projections)
     for (uint pixel : {0u, 99u}) {
-      uint expected = t_value(unscrambled(n, pr.dimensions), m);
+      uint expected = t_value(unscrambled(m, pr.dimensions), m);
       uint t = t_value(pass_points(s, pixel, 1u, 5u, pr.draws), m);
       EXPECT_EQ(t, expected) << "draw " << pr.draws[0] << " pixel " << pixel;
       if (pr.dimensions.size() == 2 && pr.dimensions[0] == 0) EXPECT_EQ(t, 0u) << "film: (0, 2)";
