@@ -18,6 +18,7 @@
 #include "validation/harness/scene_render.h"
 #include "validation/harness/variant.h"
 #include "validation/image/convergence.h"
+#include "validation/image/error_calibration.h"
 #include "validation/image/metrics.h"
 
 namespace tr {
@@ -30,10 +31,12 @@ const char* kUsage =
 
 For each variant, renders SCENE at start-spp, 2 start-spp, 4 start-spp, ... (--repeats fresh
 renders a rung, seeds seed, seed+1, ..., the sampler's sample_count set to the rung's spp and
-rounded as the sampler rounds it) until the variant's time budget is spent or the next rung
+rounded as the sampler rounds it, or to spp / K with randomizations=K) until the variant's time budget is spent or the next rung
 would overrun it (its time predicted as twice the last), and records each rung's mean render
 time, RMSE and relMSE against REF (validation/image/metrics.h) and the standard error of the
-mean relMSE. Writes OUT/convergence.csv,
+mean relMSE; with repeats, also the relMSE observed among the rung's renders and the one
+their own variance outputs estimate (validation/image/error_calibration.h): whether the error
+estimate is honest. Writes OUT/convergence.csv,
 OUT/convergence.svg (log-log RMSE and relMSE against seconds) and OUT/time_to_error.csv, and
 prints the time to reach each relMSE target and the fitted convergence rate.
 
@@ -41,7 +44,7 @@ Options:
   --variant SPEC     a render variant, comma-separated KEY=VALUE (may repeat; default: the
                      scene as written, on the CPU):
                        integrator=path|direct  max_depth=N (-1 unbounded)  rr_depth=N|off
-                       sampler=NAME            backend=cpu|gpu  label=TEXT
+                       sampler=NAME   randomizations=K   backend=cpu|gpu  label=TEXT
                      e.g. --variant max_depth=3 --variant rr_depth=off,label=no-RR
   --budget SECONDS   time budget of each variant (required)
   --start-spp N      first rung of the spp ladder (default 1)
@@ -149,28 +152,40 @@ ConvergenceSeries converge_variant(const Scene& base, const RenderVariant& v,
   for (std::uint64_t spp = a.start_spp; spp <= a.max_spp; spp *= 2) {
     if (!series.points.empty() && spent + 2.0 * last > a.budget) break;
     Scene rung = scene;
-    set_sample_count(rung, std::uint32_t(spp));
+    set_variant_sample_count(rung, v, std::uint32_t(spp));
     ConvergencePoint p;
     p.spp = double(rung.spp);
     p.renders = int(a.repeats);
     double rung_seconds = 0.0, relmse_squares = 0.0;
+    std::vector<RgbImage> means, variances;
     for (std::uint32_t k = 0; k < a.repeats; ++k, ++seed) {
       SceneRender r = render_scene(run_backend, v.backend, rung, rung.spp, seed, a.threads);
       check_same_size(r.mean, "render", reference, a.reference);
       ErrorMetrics m = error_metrics(r.mean, reference);
+      if (a.repeats > 1) {
+        means.push_back(r.mean);
+        variances.push_back(r.variance);
+      }
       rung_seconds += r.result.stats.seconds;
       p.rmse += m.rmse / a.repeats;
       p.relmse += m.relmse / a.repeats;
       relmse_squares += m.relmse * m.relmse;
     }
     p.seconds = rung_seconds / a.repeats;
-    if (a.repeats > 1)
+    if (a.repeats > 1) {
       p.relmse_stderr = std::sqrt(std::max(0.0, relmse_squares - a.repeats * p.relmse * p.relmse) /
                                   (double(a.repeats - 1) * a.repeats));
+      ErrorCalibration c = error_calibration(means, variances, p.spp, reference);
+      p.estimated_relmse = c.estimated;
+      p.seed_relmse = c.observed;
+    }
     series.points.push_back(p);
     std::printf("  %-28s %8u spp  %9.3f s  RMSE %.5g  relMSE %.5g", series.name.c_str(), rung.spp,
                 p.seconds, p.rmse, p.relmse);
-    if (a.repeats > 1) std::printf(" +- %.2g (%u renders)", p.relmse_stderr, a.repeats);
+    if (a.repeats > 1)
+      std::printf(" +- %.2g (%u renders); among them %.5g, their estimate %.5g (x%.3f)",
+                  p.relmse_stderr, a.repeats, p.seed_relmse, p.estimated_relmse,
+                  p.estimated_relmse / p.seed_relmse);
     std::printf("\n");
     std::fflush(stdout);
     last = rung_seconds;

@@ -144,24 +144,13 @@ void check_output_directory(const std::string& path) {
 // rounded as the sampler rounds sample_count (scenes/sampler.h); spp becomes K times the pass.
 // Returns false (a usage error, printed) when the pass or the total is out of range.
 bool set_randomizations(Scene& scene, std::uint32_t k, std::uint32_t& spp) {
-  const Sampler& sampler = scene.buffers.globals.sampler_params;
-  if (sampler.type == SAMPLER_INDEPENDENT) return true;
-  const std::uint32_t requested = spp ? spp : scene.spp;
-  const std::uint32_t pass = requested / k + (requested % k != 0 ? 1 : 0);
   try {
-    set_sampler(scene, sampler.type, pass, sampler.jitter != 0u);
+    set_sample_count_in_passes(scene, spp ? spp : scene.spp, k);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "twinray render: --randomizations %u: %s\n", k, e.what());
     return false;
   }
-  const std::uint64_t total = std::uint64_t(k) * scene.buffers.globals.sampler_params.sample_count;
-  if (total > 0xffffffffull) {
-    std::fprintf(stderr,
-                 "twinray render: --randomizations %u: %llu samples per pixel are too many\n", k,
-                 static_cast<unsigned long long>(total));
-    return false;
-  }
-  spp = std::uint32_t(total);
+  spp = scene.spp;
   return true;
 }
 

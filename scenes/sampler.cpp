@@ -105,4 +105,16 @@ void set_sample_count(Scene& scene, uint requested) {
   set_sampler(scene, s.type, requested, s.jitter != 0u);
 }
 
+void set_sample_count_in_passes(Scene& scene, uint requested, uint passes) {
+  const Sampler& s = scene.buffers.globals.sampler_params;
+  if (s.type == SAMPLER_INDEPENDENT) return set_sample_count(scene, requested);
+  set_sampler(scene, s.type, requested / passes + (requested % passes != 0 ? 1u : 0u),
+              s.jitter != 0u);
+  const std::uint64_t total = std::uint64_t(passes) * s.sample_count;
+  if (total > 0xffffffffu)
+    throw SceneError(std::to_string(passes) + " passes of " + std::to_string(s.sample_count) +
+                     " samples: " + std::to_string(total) + " samples per pixel are too many");
+  scene.spp = uint(total);
+}
+
 }  // namespace tr

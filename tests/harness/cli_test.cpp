@@ -161,7 +161,11 @@ TEST(ConvergeCommand, TinyBudgetWritesCsvPlotAndTimeToError) {
   std::printf("%s", out.c_str());
   ASSERT_EQ(status, 0);
   std::string csv = slurp(dir / "convergence.csv");
-  EXPECT_EQ(csv.rfind("series,seconds,spp,rmse,relmse,relmse_stderr,renders\n", 0), 0u) << csv;
+  EXPECT_EQ(
+      csv.rfind(
+          "series,seconds,spp,rmse,relmse,relmse_stderr,renders,estimated_relmse,seed_relmse\n", 0),
+      0u)
+      << csv;
   EXPECT_GE(count(csv, "\ndirect (cpu),"), 2u) << csv;
   EXPECT_GE(count(csv, "\npath-depth-1 (cpu),"), 2u) << csv;
   // Each rung's sample_count is its spp, rounded as the sampler rounds it: squares.
@@ -220,11 +224,14 @@ TEST(ConvergeCommand, RepeatsGiveErrorBars) {
     std::istringstream fields(line.substr(line.find(',') + 1));
     std::vector<double> v;
     for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    ASSERT_EQ(v.size(), 6u) << line;  // seconds, spp, rmse, relmse, relmse_stderr, renders
+    // seconds, spp, rmse, relmse, relmse_stderr, renders, estimated_relmse, seed_relmse
+    ASSERT_EQ(v.size(), 8u) << line;
     EXPECT_EQ(v[1], double(1 << rungs)) << line;
     EXPECT_GT(v[4], 0.0) << "three renders of distinct seeds differ: " << line;
     EXPECT_LT(v[4], v[3]) << line;
     EXPECT_EQ(v[5], 3.0) << line;
+    if (v[1] >= 2.0) EXPECT_GT(v[6], 0.0) << "the renders' own estimate: " << line;
+    EXPECT_GT(v[7], 0.0) << "the spread among them: " << line;
   }
   EXPECT_EQ(rungs, 3);  // 1, 2 and 4 spp
 }

@@ -43,9 +43,12 @@ TEST(Convergence, RateOfAnUnbiasedEstimator) {
 
 TEST(Convergence, CsvQuotesNamesAndListsEveryPoint) {
   std::string csv = convergence_csv({ideal("path, max_depth 8"), ideal("direct")});
-  EXPECT_EQ(csv.rfind("series,seconds,spp,rmse,relmse,relmse_stderr,renders\n", 0), 0u);
-  EXPECT_NE(csv.find("\"path, max_depth 8\",1,64,0.1,0.01,0,1\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("direct,1024,65536,0.003125,9.765625e-06,0,1\n"), std::string::npos) << csv;
+  EXPECT_EQ(
+      csv.rfind(
+          "series,seconds,spp,rmse,relmse,relmse_stderr,renders,estimated_relmse,seed_relmse\n", 0),
+      0u);
+  EXPECT_NE(csv.find("\"path, max_depth 8\",1,64,0.1,0.01,0,1,,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("direct,1024,65536,0.003125,9.765625e-06,0,1,,\n"), std::string::npos) << csv;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 11);
 }
 

@@ -48,6 +48,8 @@ RenderVariant parse_variant(const std::string& spec) {
       uint type = 0;
       if (!sampler_type_of(value, type)) throw VariantError("unknown sampler '" + value + "'");
       v.sampler = type;
+    } else if (key == "randomizations") {
+      v.randomizations = uint(parse_int(key, value, 1));
     } else if (key == "backend") {
       if (value != "cpu" && value != "gpu")
         throw VariantError("backend must be cpu or gpu, got '" + value + "'");
@@ -73,6 +75,13 @@ Scene apply_variant(const Scene& scene, const RenderVariant& variant) {
   if (variant.rr_depth) it.rr_depth = *variant.rr_depth;
   if (variant.sampler) set_sampler(s, *variant.sampler, s.spp, true);
   return s;
+}
+
+void set_variant_sample_count(Scene& scene, const RenderVariant& variant, uint spp) {
+  if (variant.randomizations)
+    set_sample_count_in_passes(scene, spp, *variant.randomizations);
+  else
+    set_sample_count(scene, spp);
 }
 
 }  // namespace tr

@@ -7,6 +7,8 @@
 //   max_depth=N              -1 for unbounded (Mitsuba semantics: 2 = direct lighting only)
 //   rr_depth=N|off           depth at which Russian roulette starts; off never starts it
 //   sampler=NAME             the scene's sampler replaced by NAME (scenes/sampler.h), jitter on
+//   randomizations=K         each render's samples as K passes of the (correlated) sampler,
+//                            whose spread is its error estimate (render/error_estimate.h)
 //   backend=cpu|gpu
 //   label=TEXT               the series name (default: the fields as given, or "scene")
 #pragma once
@@ -28,7 +30,8 @@ struct RenderVariant {
   std::string backend = "cpu";
   std::optional<uint> integrator;  // INTEGRATOR_*
   std::optional<int> max_depth, rr_depth;
-  std::optional<uint> sampler;  // SAMPLER_*
+  std::optional<uint> sampler;         // SAMPLER_*
+  std::optional<uint> randomizations;  // passes a render (scenes/sampler.h)
 };
 
 // Throws VariantError naming the bad field.
@@ -36,5 +39,8 @@ RenderVariant parse_variant(const std::string& spec);
 
 // The scene with the variant's integrator settings and sampler.
 Scene apply_variant(const Scene& scene, const RenderVariant& variant);
+
+// The variant's scene at `spp` samples per pixel (in its randomizations); throws SceneError.
+void set_variant_sample_count(Scene& scene, const RenderVariant& variant, uint spp);
 
 }  // namespace tr

@@ -95,12 +95,16 @@ void panel(std::ostringstream& svg, const std::vector<ConvergenceSeries>& series
 }  // namespace
 
 std::string convergence_csv(const std::vector<ConvergenceSeries>& series) {
-  std::string out = "series,seconds,spp,rmse,relmse,relmse_stderr,renders\n";
+  std::string out =
+      "series,seconds,spp,rmse,relmse,relmse_stderr,renders,estimated_relmse,seed_relmse\n";
   for (const ConvergenceSeries& s : series)
     for (const ConvergencePoint& p : s.points)
       out += csv_field(s.name) + "," + fmt("%.9g", p.seconds) + "," + fmt("%.9g", p.spp) + "," +
              fmt("%.9g", p.rmse) + "," + fmt("%.9g", p.relmse) + "," +
-             fmt("%.9g", p.relmse_stderr) + "," + std::to_string(p.renders) + "\n";
+             fmt("%.9g", p.relmse_stderr) + "," + std::to_string(p.renders) + "," +
+             (p.renders > 1 ? fmt("%.9g", p.estimated_relmse) + "," + fmt("%.9g", p.seed_relmse)
+                            : std::string(",")) +
+             "\n";
   return out;
 }
 

@@ -18,6 +18,10 @@ struct ConvergencePoint {
   double relmse = 0.0;
   double relmse_stderr = 0.0;
   int renders = 1;
+  // With two or more renders (error_calibration.h): the relMSE the renders' variance outputs
+  // claim and the one observed among them.
+  double estimated_relmse = 0.0;
+  double seed_relmse = 0.0;
 };
 
 struct ConvergenceSeries {
@@ -29,8 +33,8 @@ enum class ConvergenceMetric { rmse, relmse };
 
 double metric_value(const ConvergencePoint& p, ConvergenceMetric metric);
 
-// Columns: series,seconds,spp,rmse,relmse,relmse_stderr,renders (RFC 4180 quoting of the series
-// name).
+// Columns: series,seconds,spp,rmse,relmse,relmse_stderr,renders,estimated_relmse,seed_relmse
+// (RFC 4180 quoting of the series name; the last two empty for a single render).
 std::string convergence_csv(const std::vector<ConvergenceSeries>& series);
 
 // Two log-log panels (RMSE and relMSE against seconds), one line per series, Okabe–Ito
