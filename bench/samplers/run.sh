@@ -12,7 +12,10 @@
 #        MAX_SPP (1024; smaller for a quick try), SCENES ("direct_lit cornell_box"),
 #        SAMPLERS (all: "independent stratified multijitter orthogonal ldsampler zsobol sobol")
 # Writes OUT/<scene>/{reference.exr, convergence.csv, convergence.svg, time_to_error.csv} and
-# prints relMSE at 64 and 1024 spp per sampler (mean +- standard error, seconds per render).
+# prints relMSE at 64 and 1024 spp per sampler (mean +- standard error, seconds per render);
+# then, in OUT/<scene>/estimate/, whether each sampler's error estimate is honest: at MAX_SPP
+# in 16 randomizations (render --randomizations 16) and in one pass, the relMSE observed among
+# the REPEATS renders against the one their variance outputs claim.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-bench-samplers}
@@ -37,6 +40,20 @@ bench() {  # bench NAME SCENE DEFINES...
   awk -F, -v max="$max_spp" 'NR > 1 { split($1, n, " "); if ($3 == $3 + 0 && ($3 <= 64 || $3 >= max))
              printf "  %-12s %5d spp  %.4g +- %.2g  %.3f s\n", n[1], $3, $5, $6, $2 }' \
     "$dir/convergence.csv"
+  # The error estimate: each sampler at MAX_SPP in 16 independent randomizations, and (for the
+  # correlated ones) in one pass, whose variance output is only the per-sample variance.
+  variants=()
+  for s in "${samplers[@]}"; do
+    variants+=(--variant "sampler=$s,randomizations=16,label=$s/16")
+    [ "$s" = independent ] || variants+=(--variant "sampler=$s,label=$s/1")
+  done
+  "$twinray" converge "$scene" "$@" --reference "$dir/reference.exr" --budget 100000 \
+    --start-spp "$max_spp" --max-spp "$max_spp" --repeats "$repeats" "${threads[@]}" \
+    "${variants[@]}" --out "$dir/estimate" >"$dir/estimate.log"
+  echo "$name: relMSE among $repeats seeds, the renders' own estimate of it, their ratio"
+  awk -F, 'NR > 1 { split($1, n, " ");
+             printf "  %-16s %5d spp  %.4g  %.4g  %.3f\n", n[1], $3, $9, $8, $8 / $9 }' \
+    "$dir/estimate/convergence.csv"
 }
 
 for name in ${SCENES:-direct_lit cornell_box}; do
