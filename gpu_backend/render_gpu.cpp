@@ -33,18 +33,10 @@ double seconds_since(Clock::time_point t) {
 // holds about 2^20 samples on a CPU device (lavapipe, ~0.5 Msamples/s: ~2 s) and 2^24 on a
 // GPU (H100, ~400 Msamples/s: ~45 ms; a GPU 20x slower still stays under Windows' 2 s
 // watchdog), and at most 256 per pixel (float Welford inside a batch).
-// With a correlated sampler's passes (pass_size > 0) the batch is the largest divisor of the
-// pass size within that: batches then never straddle a pass, and each pass's value is exact
-// from its batches' means (render/film_moments.h PassMoments).
-uint32_t batch_spp(const DeviceInfo& device, size_t pixels, uint32_t pass_size) {
+uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
   const double samples_per_dispatch = device.cpu ? 1048576.0 : 16777216.0;
-  const uint32_t most = static_cast<uint32_t>(
+  return static_cast<uint32_t>(
       std::clamp(std::floor(samples_per_dispatch / double(pixels)), 1.0, 256.0));
-  if (pass_size == 0) return most;
-  uint32_t best = 1;
-  for (uint32_t d = 1; d <= most; ++d)
-    if (pass_size % d == 0) best = d;
-  return best;
 }
 
 // The Vulkan device, pipeline, scene and buffers of one render, kept across passes.
@@ -94,12 +86,13 @@ class GpuRenderer final : public Renderer {
                                         aov_batches_);
     timings_.build_seconds = seconds_since(phase);
     pending_build_seconds_ = timings_.build_seconds;
-    batch_size_ = batch_spp(device_info_, pixels_, pass_size_);
+    batch_size_ = batch_spp(device_info_, pixels_);
   }
 
-  // Batches cover [k B, (k + 1) B) of the sample indices (B = granularity()), cut short only
-  // at the end of the range: a pass on those boundaries dispatches what one render would, and
-  // no batch straddles a multiple of the sampler's pass size (which B divides).
+  // Batches cover [k B, (k + 1) B) of the sample indices (B = granularity()), cut short at the
+  // end of the range and at the multiples of the sampler's pass size, so that no batch
+  // straddles a pass (each pass's value is then exact from its batches' means, film_moments.h):
+  // a render split on multiples of B dispatches what one render would.
   void render(uint32_t count, FilmState& film, const ProgressFn& progress) override {
     Clock::time_point phase = Clock::now();
     const uint32_t first = film.samples, end = film.samples + count;
@@ -109,8 +102,10 @@ class GpuRenderer final : public Renderer {
       // The first dispatch runs alone: lavapipe compiles the shaders in it.
       const unsigned max_in_flight = dispatches_ == 0 ? 1 : 2;
       while (submitted < end && in_flight < max_in_flight) {
-        const uint32_t boundary = (submitted / batch_size_ + 1) * batch_size_;
-        const uint32_t n = std::min(boundary, end) - submitted;
+        std::uint64_t boundary = (std::uint64_t(submitted) / batch_size_ + 1) * batch_size_;
+        if (pass_size_ > 0)
+          boundary = std::min(boundary, (std::uint64_t(submitted) / pass_size_ + 1) * pass_size_);
+        const uint32_t n = uint32_t(std::min<std::uint64_t>(boundary, end) - submitted);
         submit(slots_[(next + in_flight) % 2], submitted, n);
         submitted += n;
         ++in_flight;
