@@ -130,6 +130,25 @@ TEST(GainMargin, SmallGainsPassOnlyWithinTheMargin) {
   EXPECT_NEAR(one_percent.gain[1], 1.01, 1e-4);
 }
 
+// Channels that are not a colour (AOVs) are tested as they are: an offset in the third channel
+// alone is found in that channel, where the XYZ conversion would spread it over X, Y and Z.
+TEST(NonColourChannels, AreTestedWithoutTheXyzConversion) {
+  RgbImage ref;
+  ref.width = ref.height = 8;
+  ref.rgb.assign(3 * ref.pixel_count(), 1.0);
+  RgbImage var = ref, img = ref;
+  for (double& v : var.rgb) v = 1.0;
+  img.at(3, 5, 2) += 1.0;  // z = 1 * sqrt(1e4 / 1) = 100 in that one value
+  VarianceTestOptions raw;
+  raw.colour = false;
+  HypothesisTestResult as_is = pixel_z_test(img, 1e4, ref, var, raw);
+  EXPECT_EQ(as_is.failing_values, 1u);
+  EXPECT_EQ(as_is.min_p_channel, 2);
+  EXPECT_NEAR(as_is.max_statistic, 100.0, 1e-9);
+  HypothesisTestResult as_colour = pixel_z_test(img, 1e4, ref, var);
+  EXPECT_EQ(as_colour.failing_values, 3u);  // blue reaches X, Y and Z
+}
+
 TEST_F(Acceptance, OneBlockTenPercentOffFailsBlockTestAndLockstep) {
   int bx = 0, by = 0;
   best_determined_block(&bx, &by);

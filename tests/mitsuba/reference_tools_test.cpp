@@ -191,6 +191,46 @@ TEST(MomentMerge, MeanAndPerSampleVarianceOfAllSamples) {
   EXPECT_EQ(m.mean.channel_names, (std::vector<std::string>{"R", "G", "B"}));
 }
 
+// Mitsuba's `aov` integrator nested in `moment`: its AOVs arrive as NAME.A / m2_NAME.A, an XYZ
+// triple among them (NAME.pos.X/Y/Z) included; they are merged as they are, after R, G, B.
+TEST(MomentMerge, MergesAovChannelsUnconvertedAfterTheColour) {
+  auto with_aovs = [](std::initializer_list<double> samples, double depth_mean, double depth_m2) {
+    Image img = pass_of(samples);
+    const std::vector<std::pair<std::string, float>> extra = {{"nested.dd.T", float(depth_mean)},
+                                                              {"nested.pos.X", 1.0f},
+                                                              {"nested.pos.Y", 2.0f},
+                                                              {"nested.pos.Z", 3.0f},
+                                                              {"m2_nested.dd.T", float(depth_m2)},
+                                                              {"m2_nested.pos.X", 1.0f},
+                                                              {"m2_nested.pos.Y", 4.0f},
+                                                              {"m2_nested.pos.Z", 9.0f}};
+    for (const auto& [name, value] : extra) {
+      img.channel_names.push_back(name);
+      img.pixels.push_back(value);
+    }
+    img.channels = int(img.channel_names.size());
+    return img;
+  };
+  // Depth samples {1, 3} and {5, 7} as in the colour test: mean 4, per-sample variance 5.
+  MergedPasses m =
+      merge_moment_passes({with_aovs({1, 3}, 2.0, 5.0), with_aovs({5, 7}, 6.0, 37.0)}, {"a", "b"});
+  EXPECT_EQ(m.mean.channel_names,
+            (std::vector<std::string>{"R", "G", "B", "dd.T", "pos.X", "pos.Y", "pos.Z"}));
+  EXPECT_EQ(m.variance.channel_names, m.mean.channel_names);
+  EXPECT_NEAR(m.mean.pixels[3], 4.0, 1e-6);
+  EXPECT_NEAR(m.variance.pixels[3], 5.0, 1e-6);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(m.mean.pixels[4 + c], c + 1.0, 1e-6);
+    EXPECT_NEAR(m.variance.pixels[4 + c], 0.0, 1e-6);
+  }
+
+  Image missing = with_aovs({1}, 1.0, 1.0);
+  missing.channel_names[13] = "m2_nested.other";  // m2_nested.dd.T
+  EXPECT_THROW(merge_moment_passes({missing}, {"missing"}), ImageError);
+  EXPECT_THROW(merge_moment_passes({with_aovs({1}, 1.0, 1.0), pass_of({1})}, {"a", "plain"}),
+               ImageError);
+}
+
 TEST(MomentMerge, SetsCancelledNegativeVariancesToZeroAndCountsThem) {
   Image img = pass_of({2, 2});
   for (int c = 6; c < 9; ++c) img.pixels[c] = std::nextafter(4.0f, 0.0f);

@@ -20,16 +20,18 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-RgbImage to_xyz(const RgbImage& rgb) {
+// The values the tests compare: XYZ for a colour image, the channels as they are otherwise.
+RgbImage tested_values(const RgbImage& rgb, const VarianceTestOptions& options) {
+  if (!options.colour) return rgb;
   RgbImage xyz = rgb;
   for (size_t i = 0; i < rgb.pixel_count(); ++i)
     srgb_to_xyz_mitsuba(&rgb.rgb[3 * i], &xyz.rgb[3 * i]);
   return xyz;
 }
 
-RgbImage to_clamped_xyz_variance(const RgbImage& rgb, double min_variance) {
-  RgbImage xyz = to_xyz(rgb);
-  for (double& v : xyz.rgb) v = std::max(v, min_variance);
+RgbImage clamped_tested_variance(const RgbImage& rgb, const VarianceTestOptions& options) {
+  RgbImage xyz = tested_values(rgb, options);
+  for (double& v : xyz.rgb) v = std::max(v, options.min_variance);
   return xyz;
 }
 
@@ -149,9 +151,9 @@ HypothesisTestResult pixel_z_test(const RgbImage& img, double spp, const RgbImag
                                   const VarianceTestOptions& options) {
   check_inputs(img, {&ref, &ref_variance}, {spp});
   Differences d;
-  d.delta = to_xyz(img);
-  RgbImage ref_xyz = to_xyz(ref);
-  d.variance = to_clamped_xyz_variance(ref_variance, options.min_variance);
+  d.delta = tested_values(img, options);
+  RgbImage ref_xyz = tested_values(ref, options);
+  d.variance = clamped_tested_variance(ref_variance, options);
   for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
     d.delta.rgb[i] -= ref_xyz.rgb[i];
     d.variance.rgb[i] /= spp;  // z = |img - ref| sqrt(spp / var)
@@ -169,9 +171,9 @@ HypothesisTestResult block_z_test(const RgbImage& img, double spp, const RgbImag
   if (block < 1 || img.width < block || img.height < block)
     throw std::invalid_argument("image smaller than one block");
   Differences d;
-  d.delta = block_means(to_xyz(img), block);
-  RgbImage ref_mean = block_means(to_xyz(ref), block);
-  d.variance = block_means(to_clamped_xyz_variance(ref_variance, options.min_variance), block);
+  d.delta = block_means(tested_values(img, options), block);
+  RgbImage ref_mean = block_means(tested_values(ref, options), block);
+  d.variance = block_means(clamped_tested_variance(ref_variance, options), block);
   for (size_t i = 0; i < d.delta.rgb.size(); ++i) {
     d.delta.rgb[i] -= ref_mean.rgb[i];
     // Variance of a block mean: mean_block(var (1/spp + 1/ref_spp)) / block².
@@ -186,7 +188,8 @@ HypothesisTestResult gain_z_test(const RgbImage& img, double spp, const RgbImage
                                  const RgbImage& ref_variance, double ref_spp,
                                  const VarianceTestOptions& options) {
   check_inputs(img, {&ref, &ref_variance}, {spp, ref_spp});
-  RgbImage d = to_xyz(img), r = to_xyz(ref), v = to_xyz(ref_variance), bias = v;
+  RgbImage d = tested_values(img, options), r = tested_values(ref, options),
+           v = tested_values(ref_variance, options), bias = v;
   for (size_t i = 0; i < d.rgb.size(); ++i) {
     d.rgb[i] -= r.rgb[i];
     // d contains the reference's noise with a minus sign: E0[r d] = -var / ref_spp.
@@ -207,12 +210,12 @@ void welch(double va, double na, double vb, double nb, double* variance, double*
 
 Differences welch_differences(int block, const RgbImage& a, const RgbImage& a_variance,
                               double a_spp, const RgbImage& b, const RgbImage& b_variance,
-                              double b_spp, double min_variance) {
+                              double b_spp, const VarianceTestOptions& options) {
   Differences d;
-  d.delta = block_means(to_xyz(a), block);
-  RgbImage b_mean = block_means(to_xyz(b), block);
-  RgbImage va = block_means(to_clamped_xyz_variance(a_variance, min_variance), block);
-  RgbImage vb = block_means(to_clamped_xyz_variance(b_variance, min_variance), block);
+  d.delta = block_means(tested_values(a, options), block);
+  RgbImage b_mean = block_means(tested_values(b, options), block);
+  RgbImage va = block_means(clamped_tested_variance(a_variance, options), block);
+  RgbImage vb = block_means(clamped_tested_variance(b_variance, options), block);
   d.variance = d.delta;
   d.dof = d.delta;
   const double samples_per_cell = double(block) * block;
@@ -227,11 +230,10 @@ Differences welch_differences(int block, const RgbImage& a, const RgbImage& a_va
 HypothesisTestResult welch_test(const std::string& name, int block, const RgbImage& a,
                                 const RgbImage& a_variance, double a_spp, const RgbImage& b,
                                 const RgbImage& b_variance, double b_spp, double alpha,
-                                double required_fraction, double min_variance) {
+                                double required_fraction, const VarianceTestOptions& options) {
   if (!(a_spp > 1.0 && b_spp > 1.0))
     throw std::invalid_argument("Welch's test needs more than one sample per pixel on each side");
-  Differences d =
-      welch_differences(block, a, a_variance, a_spp, b, b_variance, b_spp, min_variance);
+  Differences d = welch_differences(block, a, a_variance, a_spp, b, b_variance, b_spp, options);
   return evaluate(name, block, d, alpha, required_fraction);
 }
 
@@ -243,7 +245,7 @@ HypothesisTestResult pixel_welch_test(const RgbImage& a, const RgbImage& a_varia
   check_inputs(a, {&a_variance, &b, &b_variance}, {a_spp, b_spp});
   return welch_test("pixel_welch", 1, a, a_variance, a_spp, b, b_variance, b_spp,
                     sidak_alpha(options.family_alpha, double(a.pixel_count())),
-                    options.pass_fraction, options.min_variance);
+                    options.pass_fraction, options);
 }
 
 HypothesisTestResult block_welch_test(const RgbImage& a, const RgbImage& a_variance, double a_spp,
@@ -255,7 +257,7 @@ HypothesisTestResult block_welch_test(const RgbImage& a, const RgbImage& a_varia
     throw std::invalid_argument("image smaller than one block");
   double cells = double(a.width / block) * double(a.height / block);
   return welch_test("block_welch", block, a, a_variance, a_spp, b, b_variance, b_spp,
-                    sidak_alpha(options.family_alpha, 3.0 * cells), 1.0, options.min_variance);
+                    sidak_alpha(options.family_alpha, 3.0 * cells), 1.0, options);
 }
 
 }  // namespace tr

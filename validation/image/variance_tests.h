@@ -2,10 +2,11 @@
 // known: the two tests of shared/mitsuba-tests/README.md ("acceptance rule") and their Welch
 // counterparts for two renders that both come with a variance image.
 //
-// All four tests work on CIE XYZ values: mean and variance images are converted from linear
-// sRGB with Mitsuba 3's srgb_to_xyz matrix (include/mitsuba/core/spectrum.h; B. Lindbloom's
-// sRGB/D65 matrix). As in Mitsuba's render test, the variance image is transformed with the
-// same matrix (not its elementwise square) and then clamped to at least min_variance.
+// All the tests work on CIE XYZ values (unless options.colour is false): mean and variance
+// images are converted from linear sRGB with Mitsuba 3's srgb_to_xyz matrix
+// (include/mitsuba/core/spectrum.h; B. Lindbloom's sRGB/D65 matrix). As in Mitsuba's render test,
+// the variance image is transformed with the same matrix (not its elementwise square) and then
+// clamped to at least min_variance.
 //
 // Per-pixel rule (README test 1): one two-sided test per (pixel, channel); with
 // alpha = 1 - (1 - family_alpha)^(1 / pixel_count) (Šidák), the image passes when the number
@@ -47,6 +48,9 @@ struct VarianceTestOptions {
   double min_variance = 1e-4;     // XYZ variance clamp
   int block = 4;                  // block rule cell size in pixels
   double gain_margin = 0.005;     // gain rule: |k - 1| up to this counts as no bias
+  // false: the three channels are not a colour (e.g. AOVs: albedo, position, depth and indices)
+  // and are tested as they are, without the XYZ conversion; min_variance clamps them alike.
+  bool colour = true;
 };
 
 struct HypothesisTestResult {

@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
     std::printf("merged %zu passes of %dx%d into %s.exr and %s_var.exr", passes.size(),
                 merged.mean.width, merged.mean.height, prefix.c_str(), prefix.c_str());
     if (merged.clamped_variances > 0)
-      std::printf("; %zu XYZ variances below 0 (down to %.3g) set to 0", merged.clamped_variances,
-                  merged.most_negative_variance);
+      std::printf("; %zu XYZ or AOV variances below 0 (down to %.3g) set to 0",
+                  merged.clamped_variances, merged.most_negative_variance);
     std::printf("\n");
     return 0;
   } catch (const std::invalid_argument& e) {
