@@ -1,5 +1,6 @@
-// The integrators, Mitsuba 3's `path` and `direct`, as one vertex routine every backend
-// drives identically:
+// The integrators, Mitsuba 3's `path` and `direct` and pbrt-v4's `ambientocclusion`
+// (core/integrators/ambient_occlusion.h), as one vertex routine every backend drives
+// identically:
 //
 //   PathState s = integrator_begin(pixel, sample_index, seed);
 //   while (integrator_alive(s)) {
@@ -34,6 +35,7 @@
 #include "core/camera.h"
 #include "core/emitter.h"
 #include "core/film.h"
+#include "core/integrators/ambient_occlusion.h"
 #include "core/integrators/path_state.h"
 #include "core/interaction.h"
 #include "core/mis.h"
@@ -108,6 +110,8 @@ INLINE bool russian_roulette_survives(INOUT(PathState) s, Integrator it) {
 
 INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   Integrator it = scene_globals().integrator;
+  if (TR_HAS_INTEGRATOR(INTEGRATOR_AMBIENT_OCCLUSION) && it.type == INTEGRATOR_AMBIENT_OCCLUSION)
+    return ambient_occlusion_step(s, hit, it);
   bool direct = TR_HAS_INTEGRATOR(INTEGRATOR_DIRECT) && it.type == INTEGRATOR_DIRECT;
   bool first = direct ? s.stage == 0u : s.depth == 0u;
   // Sample counts of the two techniques (path: one each) and the BSDF technique's weight.

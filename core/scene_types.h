@@ -171,6 +171,7 @@ const uint RFILTER_LANCZOS = 5u;
 
 const uint INTEGRATOR_PATH = 0u;
 const uint INTEGRATOR_DIRECT = 1u;
+const uint INTEGRATOR_AMBIENT_OCCLUSION = 2u;  // pbrt-v4's `ambientocclusion`
 
 // Output variables of Mitsuba's `aov` integrator (src/integrators/aov.cpp), at most AOV_MAX.
 const uint AOV_ALBEDO = 0u;
@@ -217,9 +218,9 @@ struct Integrator {
   uint hide_emitters;
   uint emitter_samples;  // direct
   uint bsdf_samples;     // direct
-  uint pad0;
-  uint pad1;
-  uint aov_count;  // Mitsuba `aov`: output variables per sample (core/integrators/aov.h)
+  float max_distance;    // ambientocclusion: occluders count up to it (FLOAT_MAX: infinity)
+  uint cos_sample;       // ambientocclusion: 1 cosine-weighted, 0 uniform directions
+  uint aov_count;        // Mitsuba `aov`: output variables per sample (core/integrators/aov.h)
   uint pad2;
   uint pad3;
   uint pad4;

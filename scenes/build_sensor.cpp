@@ -1,6 +1,7 @@
 // Sensor (perspective, thinlens, orthographic), film (hdrfilm), reconstruction filter (box,
 // gaussian, tent, mitchell, catmullrom, lanczos), sampler (independent, stratified, ldsampler,
-// multijitter, orthogonal, zsobol, sobol; scenes/sampler.h) and integrator (path, direct, moment)
+// multijitter, orthogonal, zsobol, sobol; scenes/sampler.h) and integrator (path, direct, moment,
+// aov; pbrt-v4's ambientocclusion)
 // -> Camera, Integrator, the sampler and the Scene's spp/seed. Defaults as Mitsuba 3 (src/sensors,
 // src/render/sensor.cpp, src/render/film.cpp, src/films, src/rfilters, src/samplers,
 // src/integrators).
@@ -459,14 +460,26 @@ void SceneBuilder::add_integrator(Node& n) {
       fail(m.loc, describe(m), ": sample counts must be in [0, 2^20] and not both zero");
     it.emitter_samples = uint(emitter);
     it.bsdf_samples = uint(bsdf);
+  } else if (m.type == "ambientocclusion") {
+    // pbrt-v4 (AOIntegrator::Create): cossample (default true), maxdistance (default
+    // Infinity); core/integrators/ambient_occlusion.h.
+    it.type = INTEGRATOR_AMBIENT_OCCLUSION;
+    it.cos_sample = take_bool(m, "cossample", true) ? 1u : 0u;
+    double max_distance = take_float(m, "maxdistance", double(FLOAT_MAX));
+    if (!(max_distance > 0.0))
+      fail(find_property(m, "maxdistance")->loc, describe(m), ": maxdistance must be positive");
+    it.max_distance = float(std::min(max_distance, double(FLOAT_MAX)));
   } else if (m.type == "moment") {
     fail(m.loc, "nested moment integrators are not supported");
   } else if (m.type == "aov") {
     fail(m.loc, "nested aov integrators are not supported");
   } else {
-    fail(m.loc, "unknown integrator type \"", m.type, "\" (supported: path, direct, moment, aov)");
+    fail(m.loc, "unknown integrator type \"", m.type,
+         "\" (supported: path, direct, ambientocclusion, moment, aov)");
   }
-  it.hide_emitters = take_bool(m, "hide_emitters", false) ? 1u : 0u;
+  // Mitsuba's Integrator base; pbrt-v4's ambientocclusion has no such parameter.
+  if (m.type != "ambientocclusion")
+    it.hide_emitters = take_bool(m, "hide_emitters", false) ? 1u : 0u;
   take_sampling_integrator_base(m);
   check_consumed(m);
   scene_.integrator_name =

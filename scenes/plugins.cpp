@@ -111,6 +111,8 @@ const Entry TABLE[] = {
     {"integrator", "direct", PluginSupport::Supported, ""},
     {"integrator", "moment", PluginSupport::Supported, ""},
     {"integrator", "aov", PluginSupport::Supported, ""},
+    // twinray integrators beyond Mitsuba (pbrt-v4's)
+    {"integrator", "ambientocclusion", PluginSupport::Supported, ""},
     {"integrator", "stokes", PluginSupport::OutOfScope, POLARIZATION},
     {"integrator", "volpath", PluginSupport::OutOfScope, MEDIA},
     {"integrator", "volpathmis", PluginSupport::OutOfScope, MEDIA},

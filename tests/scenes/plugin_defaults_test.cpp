@@ -558,6 +558,24 @@ TEST(PluginDefaults, IntegratorBaseParameters) {
       "must wrap exactly one integrator");
 }
 
+// pbrt-v4's ambientocclusion (AOIntegrator::Create): cossample true, maxdistance Infinity.
+TEST(PluginDefaults, AmbientOcclusion) {
+  Scene a = load_shape("<integrator type=\"ambientocclusion\"/>");
+  const Integrator& it = a.buffers.globals.integrator;
+  EXPECT_EQ(it.type, INTEGRATOR_AMBIENT_OCCLUSION);
+  EXPECT_EQ(it.cos_sample, 1u);
+  EXPECT_EQ(it.max_distance, FLOAT_MAX);
+  EXPECT_EQ(a.integrator_name, "ambientocclusion");
+  Scene b = load_shape(
+      "<integrator type=\"ambientocclusion\"><boolean name=\"cossample\" value=\"false\"/>" +
+      flt("maxdistance", "2.5") + "</integrator>");
+  EXPECT_EQ(b.buffers.globals.integrator.cos_sample, 0u);
+  EXPECT_EQ(b.buffers.globals.integrator.max_distance, 2.5f);
+  Scene m = load_shape(
+      "<integrator type=\"moment\"><integrator type=\"ambientocclusion\"/></integrator>");
+  EXPECT_EQ(m.integrator_name, "moment(ambientocclusion)");
+}
+
 }  // namespace shapes
 
 }  // namespace

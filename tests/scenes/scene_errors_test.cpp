@@ -186,6 +186,26 @@ TEST(SceneErrors, StructuralRules) {
       "<integrator type=\"path\">\n<integer name=\"max_depth\" value=\"-2\"/></integrator>",
       "max_depth", "max_depth must be -1");
   expect_error(
+      "<integrator type=\"ambientocclusion\">\n<float name=\"maxdistance\" value=\"0\"/>"
+      "</integrator>",
+      "maxdistance", "maxdistance must be positive");
+  expect_error(
+      "<integrator type=\"ambientocclusion\">\n<float name=\"maxdistance\" value=\"-1\"/>"
+      "</integrator>",
+      "maxdistance", "maxdistance must be positive");
+  expect_error(
+      "<integrator type=\"ambientocclusion\">\n<float name=\"cossample\" value=\"1\"/>"
+      "</integrator>",
+      "cossample", "a boolean");
+  expect_error(
+      "<integrator type=\"ambientocclusion\">\n<boolean name=\"hide_emitters\" "
+      "value=\"true\"/></integrator>",
+      "hide_emitters", "unused parameter 'hide_emitters'");
+  expect_error(
+      "<integrator type=\"ambientocclusion\">\n<integer name=\"max_depth\" value=\"2\"/>"
+      "</integrator>",
+      "max_depth", "unused parameter 'max_depth'");
+  expect_error(
       "<shape type=\"sphere\"><bsdf type=\"principled\">\n<float name=\"eta\" value=\"1.5\"/>"
       "<float name=\"specular\" value=\"0.5\"/></bsdf></shape>",
       "eta", "either 'eta' or 'specular'");
