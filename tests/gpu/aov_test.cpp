@@ -1,14 +1,17 @@
-// Mitsuba's `aov` integrator on the GPU (lavapipe in CI): the closed-form AOVs of a sphere, and
-// CPU <-> GPU lockstep of every AOV channel and the colour of validation/mitsuba/plugins/aov.xml
-// at 16 spp (same seed: the same camera rays up to float rounding).
+// Mitsuba's `aov` integrator on the GPU (lavapipe in CI): the closed-form AOVs of a sphere, every
+// AOV channel of validation/mitsuba/plugins/aov.xml against Mitsuba 3.8's reference
+// (aov_reference_check.h), and CPU <-> GPU lockstep of every AOV channel and the colour at 16
+// spp (same seed: the same camera rays up to float rounding).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
+#include "aov_reference_check.h"
 #include "aov_sphere_check.h"
 #include "cpu_backend/render_cpu.h"
 #include "gpu_backend/render_gpu.h"
+#include "validation/harness/suite.h"
 
 namespace tr {
 namespace {
@@ -19,6 +22,16 @@ TEST(AovGpu, SphereMatchesClosedForm) {
   options.seed = 7;
   RenderResult r = render_gpu(scene, options);
   test::expect_aov_sphere(scene, r, 1e-5);
+}
+
+TEST(AovGpu, ChannelsMatchMitsuba) {
+  Scene scene = load_scene(test::aov_scene_folder() + "/aov.xml", {});
+  RenderOptions options;
+  const Camera& c = scene.buffers.globals.camera;
+  options.spp = acceptance_spp(c.width, c.height);
+  options.seed = 3;
+  RenderResult r = render_gpu(scene, options);
+  test::expect_aov_channels_match_mitsuba(scene, r);
 }
 
 // Values agree when within 1e-4 relative + 1e-6 absolute (the lockstep tolerance of
