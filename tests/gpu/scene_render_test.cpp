@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "../cpu/ambient_occlusion_check.h"
+#include "../cpu/constant_image_check.h"
 #include "cpu_backend/render_cpu.h"
 #include "gpu_backend/render_gpu.h"
 #include "scenes/load_scene.h"
@@ -88,6 +90,35 @@ TEST(GpuLockstep, FurnaceDiffusePath) {
 
 TEST(GpuLockstep, FurnaceDielectricPath) {
   expect_lockstep(cpu_test_scene("furnace_dielectric.xml"), 4, 2);
+}
+
+TEST(GpuLockstep, AmbientOcclusionPlanes) {
+  expect_lockstep(cpu_test_scene("ambient_occlusion_planes.xml"), 16, 1);
+}
+
+// pbrt-v4's ambientocclusion against its closed form between two planes, as
+// tests/cpu/ambient_occlusion_test.cpp on the CPU (significance: constant_image_check.h).
+TEST(GpuScenes, AmbientOcclusionMatchesTheClosedForm) {
+  struct Case {
+    const char* cos_sample;
+    double max_distance;
+    const char* target;
+  };
+  for (Case c : {Case{"true", 2.0, "0"}, Case{"false", 2.0, "1"}, Case{"true", 0.5, "1"},
+                 Case{"false", 0.5, "0"}}) {
+    LoadOptions load;
+    load.defines = {{"cossample", c.cos_sample},
+                    {"maxdistance", std::to_string(c.max_distance)},
+                    {"target", c.target}};
+    Scene scene = load_scene(cpu_test_scene("ambient_occlusion_planes.xml"), load);
+    RenderOptions options;
+    options.spp = 256;
+    options.seed = 1;
+    test::expect_constant_image(render_gpu(scene, options),
+                                test::ambient_occlusion_between_planes(1.0, c.max_distance),
+                                std::string("gpu cossample ") + c.cos_sample + " maxdistance " +
+                                    std::to_string(c.max_distance) + " target " + c.target);
+  }
 }
 
 }  // namespace
