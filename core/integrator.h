@@ -15,7 +15,12 @@
 // sample and one BSDF sample combined by the power heuristic (Veach 1997 §9.2), Russian
 // roulette from `rr_depth` on with Mitsuba's survival probability, `max_depth` counting
 // scattering events plus one (1: emitters seen directly, 2: direct illumination, -1:
-// unbounded), `hide_emitters` letting camera rays pass through area emitters.
+// unbounded), `hide_emitters` letting camera rays pass through area emitters. Beyond Mitsuba,
+// `min_depth` (default 1) keeps only the light of paths of at least that many segments, the
+// same count as max_depth's: a path of d segments ends on an emitter after d - 1 scattering
+// events, found either by the BSDF sample leaving vertex d - 1 or by the emitter sample at it;
+// both techniques of a length are kept or dropped together, so their MIS weights still sum to
+// one (Veach 1997 eq. 9.4) and the estimate is the sum over lengths in [min_depth, max_depth].
 // `direct` (src/integrators/direct.cpp): at the camera ray's hit, `emitter_samples` emitter
 // samples and `bsdf_samples` BSDF samples combined by the power heuristic with sample counts
 // (Veach 1997 eq. 9.13 with n_i p_i). One call scores what the last ray found and then runs
@@ -139,7 +144,10 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
     le = eval_environment(s.ray.d);
     em_pdf = pdf_environment(s.ray.d);
   }
-  if (any(notEqual(le, vec3(0.0f))) && any(notEqual(s.throughput, vec3(0.0f)))) {
+  // The path so far has s.depth scattering events, so s.depth + 1 segments (path; direct keeps
+  // min_depth 1 and depth 0).
+  bool long_enough = int(s.depth) + 1 >= it.min_depth;
+  if (long_enough && any(notEqual(le, vec3(0.0f))) && any(notEqual(s.throughput, vec3(0.0f)))) {
     if (s.prev_bsdf_delta != 0u) em_pdf = 0.0f;
     float weight =
         first ? 1.0f : power_heuristic(s.prev_bsdf_pdf * frac_bsdf, em_pdf * frac_emitter) / n_bsdf;
@@ -175,7 +183,9 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
 
   // ---- Emitter sampling.
   ShadowRay sr = no_shadow_ray();
-  if (round < uint(n_emitter) && (bsdf_flags(m, sp.tex) & BSDF_SMOOTH) != 0u) {
+  // The emitter sample adds one scattering event here: s.depth + 2 segments.
+  if (round < uint(n_emitter) && int(s.depth) + 2 >= it.min_depth &&
+      (bsdf_flags(m, sp.tex) & BSDF_SMOOTH) != 0u) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);

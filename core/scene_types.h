@@ -221,7 +221,7 @@ struct Integrator {
   float max_distance;    // ambientocclusion: occluders count up to it (FLOAT_MAX: infinity)
   uint cos_sample;       // ambientocclusion: 1 cosine-weighted, 0 uniform directions
   uint aov_count;        // Mitsuba `aov`: output variables per sample (core/integrators/aov.h)
-  uint pad2;
+  int min_depth;         // path: light of paths shorter than it is not counted (twinray extension)
   uint pad3;
   uint pad4;
   uvec4 aov_types[4];  // AOV_* of output variable i at [i / 4][i % 4]

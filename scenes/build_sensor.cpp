@@ -422,6 +422,7 @@ void SceneBuilder::add_integrator(Node& n) {
   it = Integrator{};
   it.max_depth = -1;
   it.rr_depth = 5;
+  it.min_depth = 1;
   it.emitter_samples = it.bsdf_samples = 1u;
   Node& m = *inner;
   for (size_t i = 0; i < aovs.types.size(); ++i) it.aov_types[i / 4][i % 4] = aovs.types[i];
@@ -444,6 +445,14 @@ void SceneBuilder::add_integrator(Node& n) {
       fail(find_property(m, "rr_depth")->loc, describe(m), ": rr_depth must be positive");
     it.max_depth = int(max_depth);
     it.rr_depth = int(rr_depth);
+    // twinray extension (Mitsuba's path reads no min_depth): the shortest path length counted,
+    // in max_depth's units (core/integrator.h).
+    long long min_depth = take_integer(m, "min_depth", 1);
+    if (min_depth < 1 || min_depth > 1000000 ||
+        (max_depth >= 0 && min_depth > std::max(max_depth, 1LL)))
+      fail(find_property(m, "min_depth")->loc, describe(m),
+           ": min_depth must be >= 1 and <= max_depth (-1: unbounded)");
+    it.min_depth = int(min_depth);
   } else if (m.type == "direct") {
     it.type = INTEGRATOR_DIRECT;
     // Mitsuba direct.cpp: shading_samples sets both counts unless they are given.

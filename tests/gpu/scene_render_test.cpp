@@ -92,6 +92,10 @@ TEST(GpuLockstep, FurnaceDielectricPath) {
   expect_lockstep(cpu_test_scene("furnace_dielectric.xml"), 4, 2);
 }
 
+TEST(GpuLockstep, PathLengthWindow) {
+  expect_lockstep(cpu_test_scene("path_length_window.xml"), 4, 1);
+}
+
 TEST(GpuLockstep, AmbientOcclusionPlanes) {
   expect_lockstep(cpu_test_scene("ambient_occlusion_planes.xml"), 16, 1);
 }

@@ -558,6 +558,20 @@ TEST(PluginDefaults, IntegratorBaseParameters) {
       "must wrap exactly one integrator");
 }
 
+// The twinray extension min_depth of path: 1 (every path length counts, as Mitsuba); with
+// max_depth 0 (nothing rendered) the default is still accepted.
+TEST(PluginDefaults, PathMinDepth) {
+  EXPECT_EQ(load_shape("<integrator type=\"path\"/>").buffers.globals.integrator.min_depth, 1);
+  EXPECT_EQ(load_shape("<integrator type=\"path\"><integer name=\"max_depth\" value=\"0\"/>"
+                       "</integrator>")
+                .buffers.globals.integrator.min_depth,
+            1);
+  EXPECT_EQ(load_shape("<integrator type=\"path\"><integer name=\"min_depth\" value=\"3\"/>"
+                       "</integrator>")
+                .buffers.globals.integrator.min_depth,
+            3);
+}
+
 // pbrt-v4's ambientocclusion (AOIntegrator::Create): cossample true, maxdistance Infinity.
 TEST(PluginDefaults, AmbientOcclusion) {
   Scene a = load_shape("<integrator type=\"ambientocclusion\"/>");

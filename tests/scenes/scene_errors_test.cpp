@@ -185,6 +185,15 @@ TEST(SceneErrors, StructuralRules) {
   expect_error(
       "<integrator type=\"path\">\n<integer name=\"max_depth\" value=\"-2\"/></integrator>",
       "max_depth", "max_depth must be -1");
+  expect_error("<integrator type=\"path\">\n<integer name=\"min_depth\" value=\"0\"/></integrator>",
+               "min_depth", "min_depth must be >= 1 and <= max_depth");
+  expect_error(
+      "<integrator type=\"path\"><integer name=\"max_depth\" value=\"3\"/>\n"
+      "<integer name=\"min_depth\" value=\"4\"/></integrator>",
+      "min_depth", "min_depth must be >= 1 and <= max_depth");
+  expect_error(
+      "<integrator type=\"direct\">\n<integer name=\"min_depth\" value=\"2\"/></integrator>",
+      "min_depth", "unused parameter 'min_depth'");
   expect_error(
       "<integrator type=\"ambientocclusion\">\n<float name=\"maxdistance\" value=\"0\"/>"
       "</integrator>",
