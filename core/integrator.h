@@ -20,7 +20,8 @@
 // same count as max_depth's: a path of d segments ends on an emitter after d - 1 scattering
 // events, found either by the BSDF sample leaving vertex d - 1 or by the emitter sample at it;
 // both techniques of a length are kept or dropped together, so their MIS weights still sum to
-// one (Veach 1997 eq. 9.4) and the estimate is the sum over lengths in [min_depth, max_depth].
+// one (Veach 1997 §9.2.2, condition W1) and the estimate is the sum over the lengths in
+// [min_depth, max_depth].
 // `direct` (src/integrators/direct.cpp): at the camera ray's hit, `emitter_samples` emitter
 // samples and `bsdf_samples` BSDF samples combined by the power heuristic with sample counts
 // (Veach 1997 eq. 9.13 with n_i p_i). One call scores what the last ray found and then runs
