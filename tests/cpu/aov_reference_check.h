@@ -22,6 +22,7 @@
 #include "render/render.h"
 #include "scenes/load_scene.h"
 #include "validation/harness/mitsuba_acceptance.h"
+#include "validation/harness/suite.h"
 
 namespace tr::test {
 
@@ -32,6 +33,17 @@ inline std::string aov_scene_folder() {
 }
 
 constexpr int kAovChannels = 17;  // of validation/mitsuba/plugins/aov.xml
+
+inline Scene load_aov_reference_scene() { return load_scene(aov_scene_folder() + "/aov.xml", {}); }
+
+// The README's budget, spp = floor(2e6 / pixels), at seed 3 (seeds 1-10 passed on the CPU).
+inline RenderOptions aov_reference_options(const Scene& scene) {
+  RenderOptions options;
+  const Camera& c = scene.buffers.globals.camera;
+  options.spp = acceptance_spp(c.width, c.height);
+  options.seed = 3;
+  return options;
+}
 
 // The README's two tests of one image; prints both verdicts under `name`.
 inline void expect_readme_tests_pass(const std::string& name, const RgbImage& mine, double spp,

@@ -5,7 +5,6 @@
 #include "aov_reference_check.h"
 #include "aov_sphere_check.h"
 #include "render_fixture.h"
-#include "validation/harness/suite.h"
 
 namespace tr {
 namespace {
@@ -19,13 +18,9 @@ TEST(AovCpu, SphereMatchesClosedForm) {
 }
 
 TEST(AovCpu, ChannelsMatchMitsuba) {
-  Scene scene = load_scene(test::aov_scene_folder() + "/aov.xml", {});
-  RenderOptions options;
-  const Camera& c = scene.buffers.globals.camera;
-  options.spp = acceptance_spp(c.width, c.height);
-  options.seed = 3;
-  RenderResult r = render_cpu(scene, options);
-  test::expect_aov_channels_match_mitsuba(scene, r);
+  Scene scene = test::load_aov_reference_scene();
+  test::expect_aov_channels_match_mitsuba(scene,
+                                          render_cpu(scene, test::aov_reference_options(scene)));
 }
 
 }  // namespace

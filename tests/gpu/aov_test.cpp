@@ -11,7 +11,6 @@
 #include "aov_sphere_check.h"
 #include "cpu_backend/render_cpu.h"
 #include "gpu_backend/render_gpu.h"
-#include "validation/harness/suite.h"
 
 namespace tr {
 namespace {
@@ -25,21 +24,16 @@ TEST(AovGpu, SphereMatchesClosedForm) {
 }
 
 TEST(AovGpu, ChannelsMatchMitsuba) {
-  Scene scene = load_scene(test::aov_scene_folder() + "/aov.xml", {});
-  RenderOptions options;
-  const Camera& c = scene.buffers.globals.camera;
-  options.spp = acceptance_spp(c.width, c.height);
-  options.seed = 3;
-  RenderResult r = render_gpu(scene, options);
-  test::expect_aov_channels_match_mitsuba(scene, r);
+  Scene scene = test::load_aov_reference_scene();
+  test::expect_aov_channels_match_mitsuba(scene,
+                                          render_gpu(scene, test::aov_reference_options(scene)));
 }
 
 // Values agree when within 1e-4 relative + 1e-6 absolute (the lockstep tolerance of
 // tests/gpu/scene_render_test.cpp); at least 99% of each channel's pixels must. uv is included:
 // this scene has no uv seam in view (the spheres' seams face away from the camera).
 TEST(AovGpu, LockstepWithCpu) {
-  Scene scene =
-      load_scene(std::string(TWINRAY_SOURCE_DIR) + "/validation/mitsuba/plugins/aov.xml", {});
+  Scene scene = test::load_aov_reference_scene();
   RenderOptions options;
   options.spp = 16;
   options.seed = 5;
