@@ -1,9 +1,11 @@
-// twinray: the command line. Verbs: render, devices, compare, validate, converge, conformance.
+// twinray: the command line. Verbs: render, devices, compare, validate, converge, conformance,
+// convert.
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "app/conformance_command.h"
+#include "app/convert_command.h"
 #include "app/exit_codes.h"
 #include "app/render_command.h"
 #ifdef TWINRAY_HAS_GPU
@@ -17,12 +19,13 @@ namespace {
 
 const char* kUsage =
     "usage: twinray <verb> [arguments]\n"
-    "  render SCENE.xml [options]   render a Mitsuba 3 XML scene (twinray render --help)\n"
+    "  render SCENE [options]       render a Mitsuba 3 XML or .scn scene (twinray render --help)\n"
     "  devices                      list Vulkan devices and whether the GPU backend can use them\n"
     "  compare A.exr B.exr [opts]   compare two renders (twinray compare --help)\n"
     "  validate SUITE [opts]        render a suite on CPU (and GPU), compare, HTML report\n"
     "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
     "  conformance FOLDER [opts]    load and render every scene of a folder, sort the outcomes\n"
+    "  convert SCENE.scn -o OUT.xml write a .scn scene as Mitsuba 3 XML (twinray convert --help)\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
     "             5 output not writable, 6 internal error, 7 render interrupted (outputs hold\n"
     "             the samples so far), 8 checkpoint damaged or of another render\n";
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
   if (verb == "validate") return tr::validate_command(argc - 1, argv + 1);
   if (verb == "converge") return tr::converge_command(argc - 1, argv + 1);
   if (verb == "conformance") return tr::conformance_command(argc - 2, argv + 2);
+  if (verb == "convert") return tr::convert_command(argc - 2, argv + 2);
   std::fprintf(stderr, "twinray: unknown verb '%s'\n%s", verb.c_str(), kUsage);
   return tr::kExitUsage;
 }

@@ -67,4 +67,15 @@ void create_output_folder(const std::string& path) {
   if (ec) throw FileError(path + ": cannot create the output folder: " + ec.message());
 }
 
+TemporaryDirectory::TemporaryDirectory() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "twinray-XXXXXX").string();
+  if (!mkdtemp(pattern.data())) throw FileError(pattern + ": cannot create a temporary folder");
+  path_ = pattern;
+}
+
+TemporaryDirectory::~TemporaryDirectory() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
 }  // namespace tr

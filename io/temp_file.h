@@ -36,4 +36,18 @@ void write_text_file(const std::string& path, const std::string& text);
 // Creates the folder `path` (and its parents) unless it exists. Throws FileError.
 void create_output_folder(const std::string& path);
 
+// A new empty folder under the system's temporary one (mkdtemp), removed with everything in it
+// on destruction. Throws FileError.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory();
+  ~TemporaryDirectory();
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
 }  // namespace tr

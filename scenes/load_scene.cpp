@@ -1,9 +1,13 @@
 #include "scenes/load_scene.h"
 
+#include <cstdio>
+#include <filesystem>
 #include <map>
 
+#include "io/temp_file.h"
 #include "scenes/plugins.h"
 #include "scenes/scene_builder.h"
+#include "scenes/scn/scn_import.h"
 
 namespace tr {
 
@@ -17,6 +21,8 @@ void count_holders(const Node& node, std::map<const Node*, int>& holders) {
     if (holders[p.object.get()]++ == 0) count_holders(*p.object, holders);
   }
 }
+
+bool is_scn(const std::string& path) { return std::filesystem::path(path).extension() == ".scn"; }
 
 // Objects that Mitsuba accepts at the top level but uses only where another object refers to
 // them: an `area` emitter (attached to the shapes that <ref> it), a sampler, film or rfilter
@@ -99,10 +105,18 @@ Scene SceneBuilder::build() {
   return std::move(scene_);
 }
 
-Scene load_scene(const std::string& xml_path, const LoadOptions& options) {
-  ParsedScene parsed = parse_scene_xml(xml_path, options);
+Scene load_scene(const std::string& path, const LoadOptions& options) {
+  if (is_scn(path)) {
+    TemporaryDirectory meshes;
+    ScnScene scn = import_scn(path, options, meshes.path(), "scn", false);
+    check_plugins(*scn.parsed.root);
+    Scene scene = SceneBuilder(std::move(scn.parsed), path).build();
+    for (const std::string& w : scn.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    return scene;
+  }
+  ParsedScene parsed = parse_scene_xml(path, options);
   check_plugins(*parsed.root);
-  SceneBuilder builder(std::move(parsed), xml_path);
+  SceneBuilder builder(std::move(parsed), path);
   return builder.build();
 }
 

@@ -1,4 +1,4 @@
-// Mitsuba 3 XML scene loading: the public entry point.
+// Scene loading: the public entry point.
 #pragma once
 
 #include <map>
@@ -17,7 +17,9 @@ struct LoadOptions {
   bool unused_defines_allowed = false;
 };
 
-// Parses and builds the scene; throws SceneError("file:line: what and why") on bad input.
-Scene load_scene(const std::string& xml_path, const LoadOptions& options);
+// Parses and builds the scene, a Mitsuba 3 XML file or, by the extension `.scn`, a .scn JSON
+// scene (scenes/scn/), whose mapping warnings it prints on stderr once the scene is built;
+// throws SceneError("file:line: what and why") on bad input.
+Scene load_scene(const std::string& path, const LoadOptions& options);
 
 }  // namespace tr

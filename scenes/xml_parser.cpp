@@ -26,6 +26,23 @@ fs::path FileResolver::resolve(const std::string& name, const fs::path& fallback
   return fs::path();
 }
 
+glm::dmat4 look_at(glm::dvec3 origin, glm::dvec3 target, glm::dvec3 up, const Location& loc) {
+  // Mitsuba Transform4f::look_at: columns (left, up', dir, origin); the camera looks along +z.
+  glm::dvec3 dir = target - origin;
+  if (glm::length(dir) == 0.0) fail(loc, "<lookat>: origin and target coincide");
+  dir = glm::normalize(dir);
+  glm::dvec3 left = glm::cross(up, dir);
+  if (glm::length(left) < 1e-12) fail(loc, "<lookat>: 'up' is parallel to the view direction");
+  left = glm::normalize(left);
+  glm::dvec3 new_up = glm::cross(dir, left);
+  glm::dmat4 m(1.0);
+  m[0] = glm::dvec4(left, 0.0);
+  m[1] = glm::dvec4(new_up, 0.0);
+  m[2] = glm::dvec4(dir, 0.0);
+  m[3] = glm::dvec4(origin, 1.0);
+  return m;
+}
+
 namespace {
 
 // Mitsuba's object tags; media, phase functions and volumes are parsed only to be refused by
@@ -56,23 +73,6 @@ struct Source {
   }
   Location at(const pugi::xml_node& x) const { return {display, line_of(x.offset_debug())}; }
 };
-
-glm::dmat4 look_at(glm::dvec3 origin, glm::dvec3 target, glm::dvec3 up, const Location& loc) {
-  // Mitsuba Transform4f::look_at: columns (left, up', dir, origin); the camera looks along +z.
-  glm::dvec3 dir = target - origin;
-  if (glm::length(dir) == 0.0) fail(loc, "<lookat>: origin and target coincide");
-  dir = glm::normalize(dir);
-  glm::dvec3 left = glm::cross(up, dir);
-  if (glm::length(left) < 1e-12) fail(loc, "<lookat>: 'up' is parallel to the view direction");
-  left = glm::normalize(left);
-  glm::dvec3 new_up = glm::cross(dir, left);
-  glm::dmat4 m(1.0);
-  m[0] = glm::dvec4(left, 0.0);
-  m[1] = glm::dvec4(new_up, 0.0);
-  m[2] = glm::dvec4(dir, 0.0);
-  m[3] = glm::dvec4(origin, 1.0);
-  return m;
-}
 
 // Rotation by `degrees` about `axis`, counter-clockwise looking down the axis (Rodrigues).
 glm::dmat4 rotation(glm::dvec3 axis, double degrees) {

@@ -25,6 +25,10 @@ struct ParsedScene {
   FileResolver resolver;
 };
 
+// Mitsuba Transform4f::look_at, as <lookat>; fails at `loc` when origin = target or up is
+// parallel to the view direction.
+glm::dmat4 look_at(glm::dvec3 origin, glm::dvec3 target, glm::dvec3 up, const Location& loc);
+
 ParsedScene parse_scene_xml(const std::string& path, const LoadOptions& options);
 
 }  // namespace tr
