@@ -61,7 +61,8 @@ std::vector<ObjSubmesh> write_obj_submeshes(const std::string& obj_path,
   std::vector<ObjSubmesh> out;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     const aiMesh& m = *scene->mMeshes[i];
-    if (m.mPrimitiveTypes != aiPrimitiveType_TRIANGLE)
+    // (Assimp also sets aiPrimitiveType_NGONEncodingFlag on triangulated polygons.)
+    if (m.mPrimitiveTypes & (aiPrimitiveType_POINT | aiPrimitiveType_LINE))
       throw std::runtime_error("group " + std::to_string(i) +
                                " has points or lines; only faces of 3 or more corners are read");
     ObjSubmesh s;

@@ -56,7 +56,7 @@ class Importer {
            "malformed JSON: ", cut == std::string::npos ? what : what.substr(cut + 2));
     }
     lines_ = json_value_lines(s);
-    if (!doc_.is_object()) bad("", "a .scn scene is a JSON object, not ", doc_.type_name());
+    if (!doc_.is_object()) bad("", "expected a JSON object, not ", doc_.type_name());
 
     fs::path dir = fs::path(path_).parent_path();
     for (const std::string& p : options_.search_paths) out_.parsed.resolver.dirs.push_back(p);
@@ -124,11 +124,11 @@ class Importer {
     out_.warnings.push_back(os.str());
   }
 
-  // Warns about every field of object `o` not in `names` (and not a `*texture` map, which
-  // read_material reports itself).
-  void known(const json& o, const std::string& pointer, std::set<std::string> names) {
+  // Warns about every field of object `o` not in `names`; `what` says why it is not read.
+  void known(const json& o, const std::string& pointer, std::set<std::string> names,
+             const std::string& what = "unknown field") {
     for (const auto& [key, value] : o.items())
-      if (!names.count(key)) warn(pointer + "/" + key, "unknown field, ignored");
+      if (!names.count(key)) warn(pointer + "/" + key, what, ", ignored");
   }
 
   // --- typed reads ---
@@ -224,7 +224,7 @@ class Importer {
   }
 
   void add_sensor() {
-    if (!doc_.contains("camera")) bad("", "the scene has no \"camera\"");
+    if (!doc_.contains("camera")) bad("", "\"camera\" is required");
     const json& c = object(doc_["camera"], "/camera");
     known(c, "/camera", {"position", "lookat", "fov", "antialiasing_radius"});
     for (const char* required : {"position", "lookat", "fov"})
@@ -408,7 +408,8 @@ class Importer {
       }
       glm::dmat4 to_world = entity_transform(e, pointer);
       if (type == "sphere") {
-        known(e, pointer, {"type", "position", "rotation", "scale", "radius", "material"});
+        known(e, pointer, {"type", "position", "rotation", "scale", "radius", "material"},
+              "not a field of a sphere entity");
         NodePtr s = make("shape", "sphere", pointer);
         if (e.contains("radius")) {
           double r = number(e["radius"], pointer + "/radius");
@@ -419,7 +420,8 @@ class Importer {
         if (!material.empty()) attach(*s, material, pointer + "/material");
         add_object(*root_, s, pointer);
       } else if (type == "mesh") {
-        known(e, pointer, {"type", "file", "position", "rotation", "scale", "material"});
+        known(e, pointer, {"type", "file", "position", "rotation", "scale", "material"},
+              "not a field of a mesh entity");
         add_mesh(e, i, pointer, material, to_world);
       } else {
         bad(pointer + "/type", "unknown entity type \"", type, "\" (mesh or sphere)");
