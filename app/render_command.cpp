@@ -32,10 +32,11 @@ namespace tr {
 namespace {
 
 const char* kUsage =
-    "usage: twinray render SCENE.xml [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
+    "usage: twinray render SCENE [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
     "                      [--randomizations K]\n"
-    "  Renders a Mitsuba 3 XML scene. Writes OUT.exr (mean radiance, RGB in the film's\n"
+    "  Renders a Mitsuba 3 XML scene, or a .scn scene (-D width, height, spp, max_depth;\n"
+    "  scenes/README.md). Writes OUT.exr (mean radiance, RGB in the film's\n"
     "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
     "  OUT_var.exr (per-sample variance v: v / spp estimates the variance of a pixel) and\n"
     "  OUT.png (sRGB preview); OUT defaults to the scene's file name in the current directory.\n"
