@@ -25,19 +25,23 @@ void put(std::ofstream& f, T value) {
 }
 
 // Binary little-endian PLY (the format of Mitsuba's ply plugin, scenes/mesh.cpp): float x y z,
-// with the OBJ's normals float nx ny nz, faces as `list uchar int vertex_indices`.
+// with the OBJ's normals float nx ny nz, with its texture coordinates float u v (as in the
+// file: the shape flips v, as Mitsuba's obj plugin does), faces as `list uchar int
+// vertex_indices`.
 void write_ply(const aiMesh& m, const std::filesystem::path& file) {
   std::ofstream f(file, std::ios::binary);
-  bool normals = m.HasNormals();
+  bool normals = m.HasNormals(), uv = m.HasTextureCoords(0);
   f << "ply\nformat binary_little_endian 1.0\ncomment written by twinray from an OBJ group\n"
     << "element vertex " << m.mNumVertices << "\nproperty float x\nproperty float y\n"
     << "property float z\n"
     << (normals ? "property float nx\nproperty float ny\nproperty float nz\n" : "")
-    << "element face " << m.mNumFaces << "\nproperty list uchar int vertex_indices\n"
+    << (uv ? "property float u\nproperty float v\n" : "") << "element face " << m.mNumFaces
+    << "\nproperty list uchar int vertex_indices\n"
     << "end_header\n";
   for (unsigned i = 0; i < m.mNumVertices; ++i) {
     put(f, m.mVertices[i].x), put(f, m.mVertices[i].y), put(f, m.mVertices[i].z);
     if (normals) put(f, m.mNormals[i].x), put(f, m.mNormals[i].y), put(f, m.mNormals[i].z);
+    if (uv) put(f, m.mTextureCoords[0][i].x), put(f, m.mTextureCoords[0][i].y);
   }
   for (unsigned i = 0; i < m.mNumFaces; ++i) {
     put(f, uint8_t(3));
@@ -70,6 +74,7 @@ std::vector<ObjSubmesh> write_obj_submeshes(const std::string& obj_path,
     s.ply_file =
         out_dir / (prefix + "_" + std::to_string(i) + "_" + file_safe(s.material) + ".ply");
     s.has_normals = m.HasNormals();
+    s.has_uv = m.HasTextureCoords(0);
     write_ply(m, s.ply_file);
     out.push_back(s);
   }

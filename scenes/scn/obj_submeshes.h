@@ -13,6 +13,7 @@ struct ObjSubmesh {
   std::string material;  // the group's `usemtl` name (Assimp's "DefaultMaterial" when none)
   std::filesystem::path ply_file;
   bool has_normals = false;  // the OBJ gave `vn` normals for this group
+  bool has_uv = false;       // ... and `vt` texture coordinates
 };
 
 // Reads `obj_path` and writes its groups as `<out_dir>/<prefix>_<index>_<material>.ply`

@@ -1,5 +1,6 @@
 #include "scenes/scn/scn_import.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -296,6 +297,61 @@ class Importer {
     }
   }
 
+  static bool is_texture_field(const std::string& key) {
+    return key.size() > 7 && key.compare(key.size() - 7, 7, "texture") == 0;
+  }
+
+  // The texture map fields of material `m` whose base field has a twinray parameter.
+  std::vector<std::string> texture_fields(const json& m) const {
+    std::vector<std::string> out;
+    for (const auto& [key, value] : m.items())
+      if (is_texture_field(key) && !mitsuba_parameter(key.substr(0, key.size() - 7), m).empty())
+        out.push_back(key);
+    return out;
+  }
+
+  // The Mitsuba parameter that .scn field `base` of material `m` sets (empty: none).
+  static std::string mitsuba_parameter(const std::string& base, const json& m) {
+    if (base == "color") return is_principled(m) ? "base_color" : "reflectance";
+    for (const char* scalar : {"metallic", "roughness", "anisotropic", "sheen"})
+      if (base == scalar) return base;
+    if (base == "speculartint") return "spec_tint";
+    if (base == "sheentint") return "sheen_tint";
+    return "";
+  }
+
+  static bool is_principled(const json& m) {
+    for (const char* k : kPrincipledFields)
+      if (m.contains(k) || m.contains(std::string(k) + "texture")) return true;
+    return false;
+  }
+
+  glm::dvec2 tiling(const json& v, const std::string& pointer) const {
+    glm::dvec2 t = v.is_array() && v.size() == 2
+                       ? glm::dvec2(number(v[0], pointer + "/0"), number(v[1], pointer + "/1"))
+                   : v.is_number() ? glm::dvec2(number(v, pointer))
+                                   : (bad(pointer, "expected a number or [u, v]"), glm::dvec2());
+    if (t.x == 0.0 || t.y == 0.0) bad(pointer, "must not be 0");
+    return t;
+  }
+
+  // An image file named by the .scn, copied once into mesh_dir (so that convert's XML finds it
+  // beside itself); returns the name the bitmap texture reads.
+  std::string image_file(const std::string& name, const std::string& pointer) {
+    fs::path fallback = fs::path(path_).parent_path();
+    fs::path file = out_.parsed.resolver.resolve(name, fallback.empty() ? "." : fallback);
+    if (file.empty()) bad(pointer, "image file \"", name, "\" not found");
+    std::string key = fs::weakly_canonical(file).string();
+    auto it = images_.find(key);
+    if (it != images_.end()) return it->second;
+    fs::path copy = mesh_dir_ / (mesh_prefix_ + "_image" + std::to_string(images_.size()) + "_" +
+                                 file.filename().string());
+    std::error_code ec;
+    fs::copy_file(file, copy, fs::copy_options::overwrite_existing, ec);
+    if (ec) bad(pointer, "cannot copy ", file.string(), " to ", copy.string(), ": ", ec.message());
+    return images_[key] = relative_names_ ? copy.filename().string() : copy.string();
+  }
+
   // Types and ranges of every field (also of materials nothing uses), and the warnings.
   void check_material(const json& m, const std::string& pointer) {
     for (const auto& [key, value] : m.items()) {
@@ -316,10 +372,20 @@ class Importer {
       } else if (key == "ior") {
         if (!(number(value, p) > 0.0)) bad(p, "must be positive");
       } else if (key == "tiling") {
-        warn(p, "unsupported: texture tiling (twinray does not import .scn textures); ignored");
-      } else if (key.size() > 7 && key.compare(key.size() - 7, 7, "texture") == 0) {
-        text(value, p);
-        warn(p, "unsupported: .scn texture maps are not imported yet; ignored");
+        tiling(value, p);
+        if (texture_fields(m).empty())
+          warn(p, "ignored: the material has no texture map it would scale");
+      } else if (is_texture_field(key)) {
+        std::string base = key.substr(0, key.size() - 7);
+        std::string name = text(value, p);
+        if (!mitsuba_parameter(base, m).empty()) {
+          image_file(name, p);
+          if (m.contains(base))
+            warn(pointer + "/" + base, "ignored: ", key,
+                 " gives this parameter (the value is not a factor of the map)");
+        } else {
+          warn(p, "unsupported: no twinray parameter takes a map of '", base, "'; ignored");
+        }
       } else {
         warn(p, "unknown field, ignored");
       }
@@ -329,34 +395,57 @@ class Importer {
   NodePtr bsdf(Material& m) {
     if (m.bsdf) return m.bsdf;
     const json& f = m.fields;
-    bool principled = false;
-    for (const char* k : kPrincipledFields) principled = principled || f.contains(k);
+    bool principled = is_principled(f);
     m.bsdf = make("bsdf", principled ? "principled" : "diffuse", m.pointer);
     m.bsdf->id = f["name"].get<std::string>();
     Node& n = *m.bsdf;
     std::string p = m.pointer + "/";
-    if (f.contains("color"))
-      add_color(n, principled ? "base_color" : "reflectance", vec3(f["color"], p + "color"),
-                p + "color");
+    std::vector<std::string> maps = texture_fields(f);
+    auto mapped = [&](const std::string& base) {
+      return std::find(maps.begin(), maps.end(), base + "texture") != maps.end();
+    };
+    if (f.contains("color") && !mapped("color"))
+      add_color(n, mitsuba_parameter("color", f), vec3(f["color"], p + "color"), p + "color");
     if (principled) {
-      const std::pair<const char*, const char*> same[] = {
-          {"metallic", "metallic"},       {"roughness", "roughness"}, {"speculartint", "spec_tint"},
-          {"anisotropic", "anisotropic"}, {"sheen", "sheen"},         {"sheentint", "sheen_tint"}};
-      for (const auto& [scn, mitsuba] : same)
-        if (f.contains(scn)) add_float(n, mitsuba, f[scn].get<double>(), p + scn);
+      for (const char* scn :
+           {"metallic", "roughness", "speculartint", "anisotropic", "sheen", "sheentint"})
+        if (f.contains(scn) && !mapped(scn))
+          add_float(n, mitsuba_parameter(scn, f), f[scn].get<double>(), p + scn);
       if (f.contains("opacity"))
         add_float(n, "spec_trans", 1.0 - f["opacity"].get<double>(), p + "opacity");
       if (f.contains("ior")) add_float(n, "eta", f["ior"].get<double>(), p + "ior");
     }
+    for (const std::string& key : maps) {
+      std::string base = key.substr(0, key.size() - 7);
+      NodePtr t = make("texture", "bitmap", p + key);
+      add(*t, "filename", PropertyKind::String, p + key).text =
+          image_file(f[key].get<std::string>(), p + key);
+      // Colour maps are sRGB-encoded, scalar maps linear (as renderers upload them: UNORM).
+      if (base != "color") add(*t, "raw", PropertyKind::Boolean, p + key).boolean = true;
+      if (f.contains("tiling")) {
+        glm::dvec2 k = tiling(f["tiling"], p + "tiling");
+        add(*t, "to_uv", PropertyKind::Transform, p + "tiling").matrix =
+            glm::scale(glm::dmat4(1.0), glm::dvec3(k, 1.0));
+      }
+      add(n, mitsuba_parameter(base, f), PropertyKind::Object, p + key).object = t;
+    }
     add_object(*root_, m.bsdf, m.pointer);
     return m.bsdf;
+  }
+
+  // A material that only emits (fields name and emission) gets no BSDF: the shape keeps
+  // Mitsuba's luminaire default, diffuse of reflectance 0 (Mitsuba 3.8 shape.cpp).
+  static bool only_emits(const json& f) {
+    for (const auto& [key, value] : f.items())
+      if (key != "name" && key != "emission") return false;
+    return f.contains("emission");
   }
 
   // Gives shape `s` the material `name` (its BSDF and, when it emits, an area emitter).
   void attach(Node& s, const std::string& name, const std::string& pointer) {
     Material& m = materials_.at(name);
     used_.insert(name);
-    add_object(s, bsdf(m), pointer);
+    if (!only_emits(m.fields)) add_object(s, bsdf(m), pointer);
     if (m.fields.contains("emission")) {
       glm::dvec3 e = vec3(m.fields["emission"], m.pointer + "/emission");
       if (e == glm::dvec3(0.0)) return;
@@ -452,6 +541,8 @@ class Importer {
       // OBJ faces without `vn` are flat: Mitsuba would smooth them across shared vertices.
       if (!g.has_normals)
         add(*s, "face_normals", PropertyKind::Boolean, file_pointer).boolean = true;
+      // OBJ's v runs up the image; flipped as Mitsuba's obj plugin flips it by default.
+      if (g.has_uv) add(*s, "flip_tex_coords", PropertyKind::Boolean, file_pointer).boolean = true;
       if (to_world != glm::dmat4(1.0)) add_transform(*s, to_world, pointer);
       std::string m = material.empty() ? g.material : material;
       if (materials_.count(m)) {
@@ -475,6 +566,7 @@ class Importer {
   NodePtr root_;
   std::map<std::string, Material> materials_;
   std::set<std::string> used_;
+  std::map<std::string, std::string> images_;  // canonical path -> the name bitmaps read
   int unnamed_ = 0;
 };
 

@@ -55,14 +55,15 @@ check_render "$seed_dir/cornellbox_sphere.scn"
 check_render "$scene_dir/features.scn" \
   'features.scn:4: skybox: unknown field, ignored' \
   'features.scn:9: camera.antialiasing_radius: approximate: a tent filter' \
+  'features.scn:15: materials[1].color: ignored: colortexture gives this parameter' \
+  'features.scn:17: materials[1].roughness: ignored: roughnesstexture gives this parameter' \
   'features.scn:22: materials[1].subsurface: unsupported' \
-  'features.scn:23: materials[1].tiling: unsupported' \
-  'features.scn:24: materials[1].colortexture: unsupported' \
-  'features.scn:25: materials[1].shininess: unknown field, ignored' \
-  'features.scn:29: materials[4]: material "unused" is used by no entity' \
-  'features.scn:34: entities[0].file: usemtl "nomaterial" of features.obj has no .scn material' \
-  'features.scn:36: entities[0].rotation: approximate: rotations about several axes' \
-  'features.scn:41: entities[2].file: not a field of a sphere entity, ignored'
+  "features.scn:26: materials[1].normaltexture: unsupported: no twinray parameter takes a map of 'normal'" \
+  'features.scn:27: materials[1].shininess: unknown field, ignored' \
+  'features.scn:31: materials[4]: material "unused" is used by no entity' \
+  'features.scn:36: entities[0].file: usemtl "nomaterial" of features.obj has no .scn material' \
+  'features.scn:38: entities[0].rotation: approximate: rotations about several axes' \
+  'features.scn:43: entities[2].file: not a field of a sphere entity, ignored'
 
 # -D overrides what the .scn sets: the film is 24x16
 grep -q '24x16' "$work/features.out" || fail "features: -D width/height not applied"
@@ -71,7 +72,7 @@ grep -q '24x16' "$work/features.out" || fail "features: -D width/height not appl
 
 # bad input: name and the line the error must name
 for case in malformed:3 missing_obj:5 bad_type:5 corrupt_obj:4 color_range:4 unknown_type:4 \
-  unknown_material:4 not_object:1 no_camera:1 nonuniform_sphere:4; do
+  unknown_material:4 not_object:1 no_camera:1 nonuniform_sphere:4 missing_texture:4; do
   name=${case%%:*}
   line=${case##*:}
   for verb in render convert; do
