@@ -12,9 +12,9 @@ class Scanner {
  public:
   explicit Scanner(const std::string& text) : s_(text) {}
 
-  std::map<std::string, int> scan() {
+  JsonLines scan() {
     value("");
-    return lines_;
+    return out_;
   }
 
  private:
@@ -43,7 +43,7 @@ class Scanner {
 
   void value(const std::string& pointer) {
     blank();
-    lines_[pointer] = line_;
+    if (!out_.lines.emplace(pointer, line_).second) out_.repeated.emplace(pointer, line_);
     if (i_ >= s_.size()) return;
     if (s_[i_] == '{') {
       ++i_;
@@ -73,13 +73,11 @@ class Scanner {
   const std::string& s_;
   size_t i_ = 0;
   int line_ = 1;
-  std::map<std::string, int> lines_;
+  JsonLines out_;
 };
 
 }  // namespace
 
-std::map<std::string, int> json_value_lines(const std::string& text) {
-  return Scanner(text).scan();
-}
+JsonLines json_value_lines(const std::string& text) { return Scanner(text).scan(); }
 
 }  // namespace tr

@@ -1,6 +1,7 @@
 // The line on which each value of a JSON document starts, keyed by its JSON pointer (RFC 6901,
-// e.g. "/entities/1/radius"), so that errors about a value can say file:line. nlohmann::json
-// keeps no positions; this scans text that nlohmann::json has already accepted as valid.
+// e.g. "/entities/1/radius"), so that errors about a value can say file:line, and the keys that
+// an object repeats (nlohmann::json keeps the last silently; RFC 8259 section 4 leaves it to the
+// reader). nlohmann::json keeps no positions; this scans text it has already accepted as valid.
 #pragma once
 
 #include <map>
@@ -8,6 +9,11 @@
 
 namespace tr {
 
-std::map<std::string, int> json_value_lines(const std::string& text);
+struct JsonLines {
+  std::map<std::string, int> lines;     // pointer -> line of the value's first character
+  std::map<std::string, int> repeated;  // pointer of a repeated key -> line of its second value
+};
+
+JsonLines json_value_lines(const std::string& text);
 
 }  // namespace tr

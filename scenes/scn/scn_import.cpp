@@ -56,7 +56,13 @@ class Importer {
       fail(Location{path_, line},
            "malformed JSON: ", cut == std::string::npos ? what : what.substr(cut + 2));
     }
-    lines_ = json_value_lines(s);
+    JsonLines lines = json_value_lines(s);
+    lines_ = lines.lines;
+    if (!lines.repeated.empty()) {
+      const auto& [pointer, line] = *lines.repeated.begin();
+      fail(Location{path_, line}, field(pointer), ": given twice (first on line ", lines_[pointer],
+           ")");
+    }
     if (!doc_.is_object()) bad("", "expected a JSON object, not ", doc_.type_name());
 
     fs::path dir = fs::path(path_).parent_path();
