@@ -114,7 +114,9 @@ class Writer {
 
 void write_scene_xml(std::ostream& out, const Node& root,
                      const std::vector<SceneParameter>& parameters, const std::string& comment) {
-  out << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<!-- " << comment << " -->\n"
+  std::string text = comment;  // "--" may not occur inside an XML comment
+  for (size_t i; (i = text.find("--")) != std::string::npos;) text.replace(i, 2, "- -");
+  out << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<!-- " << text << " -->\n"
       << "<scene version=\"3.0.0\">\n";
   for (const SceneParameter& s : parameters)
     out << "  <default name=\"" << escaped(s.name) << "\" value=\"" << escaped(s.value) << "\"/>\n";

@@ -183,7 +183,6 @@ class Importer {
     p.name = name;
     p.kind = kind;
     p.loc = at(pointer);
-    p.used = false;
     n.props.push_back(p);
     return n.props.back();
   }
@@ -341,12 +340,18 @@ class Importer {
     return t;
   }
 
-  // An image file named by the .scn, copied once into mesh_dir (so that convert's XML finds it
-  // beside itself); returns the name the bitmap texture reads.
-  std::string image_file(const std::string& name, const std::string& pointer) {
+  // The file an image name of the .scn names (searched as mesh files are).
+  fs::path image_path(const std::string& name, const std::string& pointer) const {
     fs::path fallback = fs::path(path_).parent_path();
     fs::path file = out_.parsed.resolver.resolve(name, fallback.empty() ? "." : fallback);
     if (file.empty()) bad(pointer, "image file \"", name, "\" not found");
+    return file;
+  }
+
+  // The image copied once into mesh_dir (so that convert's XML finds it beside itself); returns
+  // the name the bitmap texture reads.
+  std::string image_file(const std::string& name, const std::string& pointer) {
+    fs::path file = image_path(name, pointer);
     std::string key = fs::weakly_canonical(file).string();
     auto it = images_.find(key);
     if (it != images_.end()) return it->second;
@@ -385,7 +390,7 @@ class Importer {
         std::string base = key.substr(0, key.size() - 7);
         std::string name = text(value, p);
         if (!mitsuba_parameter(base, m).empty()) {
-          image_file(name, p);
+          image_path(name, p);
           if (m.contains(base))
             warn(pointer + "/" + base, "ignored: ", key,
                  " gives this parameter (the value is not a factor of the map)");
