@@ -103,8 +103,8 @@ class Importer {
     }
   }
 
-  static std::string field(
-      const std::string& pointer) {  // "/entities/1/radius" -> entities[1].radius
+  // A JSON pointer as a reader names the field: "/entities/1/radius" -> entities[1].radius.
+  static std::string field(const std::string& pointer) {
     std::string out;
     size_t i = 1;
     while (i <= pointer.size() && !pointer.empty()) {
