@@ -41,10 +41,14 @@ class Scanner {
     return out;
   }
 
-  void value(const std::string& pointer) {
+  void value(const std::string& pointer, int depth = 0) {
     blank();
     if (!out_.lines.emplace(pointer, line_).second) out_.repeated.emplace(pointer, line_);
-    if (i_ >= s_.size()) return;
+    if (i_ >= s_.size() || out_.too_deep) return;
+    if (depth > kJsonMaxDepth) {
+      out_.too_deep = line_;
+      return;
+    }
     if (s_[i_] == '{') {
       ++i_;
       for (blank(); i_ < s_.size() && s_[i_] != '}'; blank()) {
@@ -52,7 +56,8 @@ class Scanner {
         std::string key = string();
         blank();
         ++i_;  // ':'
-        value(pointer + "/" + pointer_token(key));
+        value(pointer + "/" + pointer_token(key), depth + 1);
+        if (out_.too_deep) return;
       }
       ++i_;
     } else if (s_[i_] == '[') {
@@ -60,7 +65,8 @@ class Scanner {
       int index = 0;
       for (blank(); i_ < s_.size() && s_[i_] != ']'; blank()) {
         if (s_[i_] == ',') ++i_;
-        value(pointer + "/" + std::to_string(index++));
+        value(pointer + "/" + std::to_string(index++), depth + 1);
+        if (out_.too_deep) return;
       }
       ++i_;
     } else if (s_[i_] == '"') {

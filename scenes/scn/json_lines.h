@@ -9,9 +9,14 @@
 
 namespace tr {
 
+// Arrays and objects nested deeper than this are not scanned (the scan recurses; a .scn scene
+// nests 4 deep).
+constexpr int kJsonMaxDepth = 64;
+
 struct JsonLines {
   std::map<std::string, int> lines;     // pointer -> line of the value's first character
   std::map<std::string, int> repeated;  // pointer of a repeated key -> line of its second value
+  int too_deep = 0;  // the line of the first value nested deeper than kJsonMaxDepth, or 0
 };
 
 JsonLines json_value_lines(const std::string& text);

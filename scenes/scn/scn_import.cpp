@@ -58,6 +58,9 @@ class Importer {
     }
     JsonLines lines = json_value_lines(s);
     lines_ = lines.lines;
+    if (lines.too_deep)
+      fail(Location{path_, lines.too_deep}, "arrays and objects nested deeper than ", kJsonMaxDepth,
+           " levels");
     if (!lines.repeated.empty()) {
       const auto& [pointer, line] = *lines.repeated.begin();
       fail(Location{path_, line}, field(pointer), ": given twice (first on line ", lines_[pointer],
@@ -345,6 +348,8 @@ class Importer {
     fs::path fallback = fs::path(path_).parent_path();
     fs::path file = out_.parsed.resolver.resolve(name, fallback.empty() ? "." : fallback);
     if (file.empty()) bad(pointer, "image file \"", name, "\" not found");
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) bad(pointer, file.string(), ": not a regular file");
     return file;
   }
 
@@ -537,6 +542,8 @@ class Importer {
     fs::path fallback = fs::path(path_).parent_path();
     fs::path file = out_.parsed.resolver.resolve(name, fallback.empty() ? "." : fallback);
     if (file.empty()) bad(file_pointer, "mesh file \"", name, "\" not found");
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) bad(file_pointer, file.string(), ": not a regular file");
     std::vector<ObjSubmesh> groups;
     try {
       groups =

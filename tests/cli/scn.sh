@@ -73,7 +73,7 @@ grep -q '24x16' "$work/features.out" || fail "features: -D width/height not appl
 # bad input: name and the line the error must name
 for case in malformed:3 missing_obj:5 bad_type:5 corrupt_obj:4 color_range:4 unknown_type:4 \
   unknown_material:4 not_object:1 no_camera:1 nonuniform_sphere:4 missing_texture:4 \
-  repeated_key:6; do
+  repeated_key:6 too_deep:2; do
   name=${case%%:*}
   line=${case##*:}
   for verb in render convert; do
