@@ -56,8 +56,9 @@ std::vector<ObjSubmesh> write_obj_submeshes(const std::string& obj_path,
                                             const std::filesystem::path& out_dir,
                                             const std::string& prefix) {
   Assimp::Importer importer;
-  // Polygons become triangle fans (Mitsuba's OBJ reader does the same); vertices stay per
-  // corner as Assimp's OBJ importer makes them, so no two groups share one.
+  // aiProcess_Triangulate (Assimp's TriangulateProcess.cpp) splits a quad on one diagonal and
+  // larger polygons by ear clipping: for planar convex faces the surface of Mitsuba's fans.
+  // Vertices stay per corner as Assimp's OBJ importer makes them, so no two groups share one.
   const aiScene* scene =
       importer.ReadFile(obj_path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
   if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
