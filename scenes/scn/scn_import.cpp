@@ -389,12 +389,17 @@ class Importer {
         if (!(number(value, p) > 0.0)) bad(p, "must be positive");
       } else if (key == "tiling") {
         tiling(value, p);
-        if (texture_fields(m).empty())
+        if (texture_fields(m).empty() && !m.contains("normaltexture"))
           warn(p, "ignored: the material has no texture map it would scale");
       } else if (is_texture_field(key)) {
         std::string base = key.substr(0, key.size() - 7);
         std::string name = text(value, p);
-        if (!mitsuba_parameter(base, m).empty()) {
+        if (base == "normal") {
+          image_path(name, p);
+          warn(p,
+               "approximate: read as Mitsuba's normalmap, a tangent-space map with +y along "
+               "the texture's v (OpenGL convention), in the frame of the mesh's uv");
+        } else if (!mitsuba_parameter(base, m).empty()) {
           image_path(name, p);
           if (m.contains(base))
             warn(pointer + "/" + base, "ignored: ", key,
@@ -406,6 +411,22 @@ class Importer {
         warn(p, "unknown field, ignored");
       }
     }
+  }
+
+  // A bitmap texture of map field `key` of material `m`: `raw` (linear) unless a colour map,
+  // which is sRGB-encoded; scaled by the material's tiling.
+  NodePtr bitmap(const Material& m, const std::string& key, bool raw) {
+    std::string p = m.pointer + "/";
+    NodePtr t = make("texture", "bitmap", p + key);
+    add(*t, "filename", PropertyKind::String, p + key).text =
+        image_file(m.fields[key].get<std::string>(), p + key);
+    if (raw) add(*t, "raw", PropertyKind::Boolean, p + key).boolean = true;
+    if (m.fields.contains("tiling")) {
+      glm::dvec2 k = tiling(m.fields["tiling"], p + "tiling");
+      add(*t, "to_uv", PropertyKind::Transform, p + "tiling").matrix =
+          glm::scale(glm::dmat4(1.0), glm::dvec3(k, 1.0));
+    }
+    return t;
   }
 
   NodePtr bsdf(Material& m) {
@@ -433,17 +454,16 @@ class Importer {
     }
     for (const std::string& key : maps) {
       std::string base = key.substr(0, key.size() - 7);
-      NodePtr t = make("texture", "bitmap", p + key);
-      add(*t, "filename", PropertyKind::String, p + key).text =
-          image_file(f[key].get<std::string>(), p + key);
-      // Colour maps are sRGB-encoded, scalar maps linear (as renderers upload them: UNORM).
-      if (base != "color") add(*t, "raw", PropertyKind::Boolean, p + key).boolean = true;
-      if (f.contains("tiling")) {
-        glm::dvec2 k = tiling(f["tiling"], p + "tiling");
-        add(*t, "to_uv", PropertyKind::Transform, p + "tiling").matrix =
-            glm::scale(glm::dmat4(1.0), glm::dvec3(k, 1.0));
-      }
-      add(n, mitsuba_parameter(base, f), PropertyKind::Object, p + key).object = t;
+      add(n, mitsuba_parameter(base, f), PropertyKind::Object, p + key).object =
+          bitmap(m, key, base != "color");
+    }
+    if (f.contains("normaltexture")) {  // Mitsuba's normalmap BSDF around the material
+      NodePtr outer = make("bsdf", "normalmap", m.pointer);
+      std::swap(outer->id, m.bsdf->id);
+      add(*outer, "normalmap", PropertyKind::Object, p + "normaltexture").object =
+          bitmap(m, "normaltexture", true);
+      add_object(*outer, m.bsdf, m.pointer);
+      m.bsdf = outer;
     }
     add_object(*root_, m.bsdf, m.pointer);
     return m.bsdf;

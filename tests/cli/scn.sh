@@ -58,7 +58,7 @@ check_render "$scene_dir/features.scn" \
   'features.scn:15: materials[1].color: ignored: colortexture gives this parameter' \
   'features.scn:17: materials[1].roughness: ignored: roughnesstexture gives this parameter' \
   'features.scn:22: materials[1].subsurface: unsupported' \
-  "features.scn:26: materials[1].normaltexture: unsupported: no twinray parameter takes a map of 'normal'" \
+  "features.scn:26: materials[1].normaltexture: approximate: read as Mitsuba's normalmap" \
   'features.scn:27: materials[1].shininess: unknown field, ignored' \
   'features.scn:31: materials[4]: material "unused" is used by no entity' \
   'features.scn:36: entities[0].file: usemtl "nomaterial" of features.obj has no .scn material' \
