@@ -16,11 +16,11 @@ if [ "$mode" = dump ]; then
   mkdir -p "$out"
   # The aov integrator replaces the Cornell box's own, so it gets a copy of the box that finds
   # its meshes through <path>.
-  sed -e 's|<scene version="3.0.0">|&<path value="'"$root"'/scenes/cornell-box"/>|' \
+  sed -e 's|<scene version="3.0.0">|&<path value="'"$root"'/examples/scenes/cornell-box"/>|' \
       -e 's|<integrator type="path">|<integrator type="aov"><string name="aovs" value="a:albedo,d:depth,p:position,t:uv,g:geo_normal,n:sh_normal,i:prim_index,s:shape_index"/><integrator type="path">|' \
       -e 's|</integrator>|</integrator></integrator>|' \
-      "$root/scenes/cornell-box/cornell_box.xml" >"$out/cornell_aov.xml"
-  scenes=("$root/scenes/cornell-box/cornell_box.xml" "$out/cornell_aov.xml" "$here"/cornell_*.xml)
+      "$root/examples/scenes/cornell-box/cornell_box.xml" >"$out/cornell_aov.xml"
+  scenes=("$root/examples/scenes/cornell-box/cornell_box.xml" "$out/cornell_aov.xml" "$here"/cornell_*.xml)
   for s in "${scenes[@]}"; do
     "$build/tests/gpu/gpu_bench" "$s" "${size[@]}" --save "$out/$(basename "$s" .xml).bin"
   done

@@ -60,7 +60,7 @@ for name in ${SCENES:-direct_lit cornell_box}; do
   case $name in
     direct_lit) bench direct_lit "$root/bench/samplers/direct_lit.xml" ;;
     cornell_box)
-      bench cornell_box "$root/scenes/cornell-box/cornell_box.xml" -D max_depth=6 -D width=64 \
+      bench cornell_box "$root/examples/scenes/cornell-box/cornell_box.xml" -D max_depth=6 -D width=64 \
         -D height=64
       ;;
     *) echo "run.sh: unknown scene '$name'" >&2 && exit 2 ;;
