@@ -5,6 +5,7 @@
 #include <map>
 
 #include "io/temp_file.h"
+#include "scenes/gltf/gltf_import.h"
 #include "scenes/plugins.h"
 #include "scenes/scene_builder.h"
 #include "scenes/scn/scn_import.h"
@@ -112,6 +113,14 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
     check_plugins(*scn.parsed.root);
     Scene scene = SceneBuilder(std::move(scn.parsed), path).build();
     for (const std::string& w : scn.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    return scene;
+  }
+  if (is_gltf(path)) {  // glTF 2.0 (scenes/gltf/)
+    TemporaryDirectory work;
+    GltfScene gltf = import_gltf(path, options, work.path());
+    check_plugins(*gltf.parsed.root);
+    Scene scene = SceneBuilder(std::move(gltf.parsed), path).build();
+    for (const std::string& w : gltf.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return scene;
   }
   ParsedScene parsed = parse_scene_xml(path, options);

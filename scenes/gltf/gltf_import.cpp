@@ -1,0 +1,1064 @@
+#include "scenes/gltf/gltf_import.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "scenes/bitmap.h"
+#include "scenes/scn/json_lines.h"
+
+namespace tr {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+const char* const kParameterNames[] = {"width", "height", "spp", "max_depth"};
+const long long kDefaultSpp = 64;
+const long long kDefaultHeight = 576;  // Mitsuba's hdrfilm default height
+const long long kDefaultWidth = 768;   // ... and width, when the camera gives no aspect ratio
+
+// Extensions whose fields are read (the others are reported).
+const std::set<std::string> kSupportedExtensions = {
+    "KHR_lights_punctual", "KHR_materials_transmission", "KHR_materials_ior",
+    "KHR_materials_emissive_strength"};
+
+// glTF 2.0 section 3.6.2.4 (accessor data types) / 5.24.3: primitive modes.
+const int kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
+
+// What a baked texture holds (glTF 2.0 section 3.9: the channels each material map uses).
+enum class Bake { Color, Red, Green, Blue, Normal };
+
+class Importer {
+ public:
+  Importer(const std::string& path, const LoadOptions& options, const fs::path& work_dir)
+      : path_(path), options_(options), work_(work_dir) {}
+
+  GltfScene run() {
+    std::error_code ec;
+    if (!fs::is_regular_file(path_, ec))
+      throw SceneError(path_ + ":0: scene file not found or not a regular file");
+    dir_ = fs::path(path_).parent_path();
+    if (dir_.empty()) dir_ = ".";
+    std::string text = read_document();
+    try {
+      doc_ = json::parse(text);
+    } catch (const json::parse_error& e) {
+      int line = 1;
+      for (size_t i = 0; i < e.byte && i < text.size(); ++i) line += text[i] == '\n';
+      std::string what = e.what();
+      size_t cut = what.find("] ");
+      fail(Location{path_, line},
+           "malformed JSON: ", cut == std::string::npos ? what : what.substr(cut + 2));
+    }
+    JsonLines lines = json_value_lines(text);
+    lines_ = lines.lines;
+    if (lines.too_deep)
+      fail(Location{path_, lines.too_deep}, "arrays and objects nested deeper than ", kJsonMaxDepth,
+           " levels");
+    if (!doc_.is_object()) bad("", "expected a JSON object, not ", doc_.type_name());
+    check_asset();
+    read_parameters();
+    load_geometry();
+
+    for (const std::string& p : options_.search_paths) out_.parsed.resolver.dirs.push_back(p);
+    out_.parsed.resolver.dirs.push_back(dir_);
+    root_ = std::make_shared<Node>();
+    root_->tag = "scene";
+    root_->loc = at("");
+    out_.parsed.root = root_;
+
+    report_top_level();
+    read_lights();
+    walk_scene();
+    add_sensor();
+    add_integrator();
+    return std::move(out_);
+  }
+
+ private:
+  // --- locations and messages (as scenes/scn/scn_import.cpp) ---
+
+  Location at(std::string pointer) const {
+    for (;;) {
+      auto it = lines_.find(pointer);
+      if (it != lines_.end() || pointer.empty())
+        return {path_, it != lines_.end() ? it->second : 1};
+      pointer = pointer.substr(0, pointer.rfind('/'));
+    }
+  }
+
+  static std::string field(const std::string& pointer) {
+    std::string out;
+    size_t i = 1;
+    while (i <= pointer.size() && !pointer.empty()) {
+      size_t j = pointer.find('/', i);
+      std::string token = pointer.substr(i, j == std::string::npos ? std::string::npos : j - i);
+      bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
+      out += index ? "[" + token + "]" : (out.empty() ? "" : ".") + token;
+      if (j == std::string::npos) break;
+      i = j + 1;
+    }
+    return out.empty() ? "the scene" : out;
+  }
+
+  template <typename... Parts>
+  [[noreturn]] void bad(const std::string& pointer, const Parts&... parts) const {
+    fail(at(pointer), field(pointer), ": ", parts...);
+  }
+
+  template <typename... Parts>
+  void warn(const std::string& pointer, const Parts&... parts) {
+    std::ostringstream os;
+    os << to_string(at(pointer)) << ": " << field(pointer) << ": ";
+    (os << ... << parts);
+    std::string line = os.str();
+    if (warned_.insert(line).second) out_.warnings.push_back(line);
+  }
+
+  // Warns about each field of `o` not in `names` (`extensions` and `extras` are handled apart:
+  // extras carry application data with no rendering meaning, section 3.12).
+  void known(const json& o, const std::string& pointer, std::set<std::string> names) {
+    names.insert("extras");
+    names.insert("name");
+    for (const auto& [key, value] : o.items()) {
+      if (key == "extensions" && !names.count(key)) {
+        extensions(value, pointer + "/extensions", {});
+      } else if (!names.count(key)) {
+        warn(pointer + "/" + key, "not supported by twinray, ignored");
+      }
+    }
+  }
+
+  // Warns about each extension object of `ext` not in `read`.
+  void extensions(const json& ext, const std::string& pointer, std::set<std::string> read) {
+    if (!ext.is_object()) return;
+    for (const auto& [key, value] : ext.items())
+      if (!read.count(key))
+        warn(pointer + "/" + key, "extension not supported by twinray, ignored");
+  }
+
+  // --- typed reads ---
+
+  const json* member(const json& o, const char* key) const {
+    auto it = o.find(key);
+    return it == o.end() ? nullptr : &*it;
+  }
+
+  const json& object(const json& v, const std::string& pointer) const {
+    if (!v.is_object()) bad(pointer, "expected an object, not ", v.type_name());
+    return v;
+  }
+
+  const json& array(const json& v, const std::string& pointer) const {
+    if (!v.is_array()) bad(pointer, "expected an array, not ", v.type_name());
+    return v;
+  }
+
+  double number(const json& v, const std::string& pointer) const {
+    if (!v.is_number()) bad(pointer, "expected a number, not ", v.type_name());
+    double d = v.get<double>();
+    if (!std::isfinite(d)) bad(pointer, "expected a finite number");
+    return d;
+  }
+
+  double number_or(const json& o, const char* key, double fallback, const std::string& pointer) {
+    const json* v = member(o, key);
+    return v ? number(*v, pointer + "/" + key) : fallback;
+  }
+
+  long long index(const json& v, const std::string& pointer, size_t count) const {
+    if (!v.is_number_integer()) bad(pointer, "expected an index, not ", v.type_name());
+    long long i = v.get<long long>();
+    if (i < 0 || size_t(i) >= count) bad(pointer, "index ", i, " out of range (", count, " items)");
+    return i;
+  }
+
+  std::string text(const json& v, const std::string& pointer) const {
+    if (!v.is_string()) bad(pointer, "expected a string, not ", v.type_name());
+    return v.get<std::string>();
+  }
+
+  std::vector<double> numbers(const json& v, const std::string& pointer, size_t n) const {
+    if (!v.is_array() || v.size() != n) bad(pointer, "expected an array of ", n, " numbers");
+    std::vector<double> out;
+    for (size_t i = 0; i < n; ++i) out.push_back(number(v[i], pointer + "/" + std::to_string(i)));
+    return out;
+  }
+
+  // The top-level array `key` (empty when absent).
+  const json& list(const char* key) {
+    static const json empty = json::array();
+    const json* v = member(doc_, key);
+    return v ? array(*v, std::string("/") + key) : empty;
+  }
+
+  // --- the container (section 4: GLB file format) and the asset ---
+
+  static uint32_t u32(const std::string& s, size_t at) {
+    uint32_t v = 0;
+    for (int k = 3; k >= 0; --k) v = (v << 8) | uint8_t(s[at + k]);
+    return v;
+  }
+
+  std::string read_document() {
+    std::ifstream in(path_, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    std::string s = buffer.str();
+    if (s.size() < 4 || s.compare(0, 4, "glTF") != 0) return s;
+    // Section 4.4: a 12-byte header (magic, version 2, length), then chunks of (length, type,
+    // data): the first JSON (0x4E4F534A), then an optional BIN (0x004E4942).
+    Location top{path_, 0};
+    if (s.size() < 20) fail(top, "truncated GLB header");
+    if (u32(s, 4) != 2) fail(top, "GLB container version ", u32(s, 4), " (glTF 2.0 is version 2)");
+    if (u32(s, 8) != s.size())
+      fail(top, "GLB header length ", u32(s, 8), " is not the file's size ", s.size());
+    size_t json_length = u32(s, 12);
+    if (u32(s, 16) != 0x4E4F534Au || 20 + json_length > s.size())
+      fail(top, "the first GLB chunk is not a complete JSON chunk");
+    size_t bin = 20 + json_length;
+    if (bin + 8 <= s.size() && u32(s, bin + 4) == 0x004E4942u) {
+      size_t n = u32(s, bin);
+      if (bin + 8 + n > s.size()) fail(top, "truncated GLB BIN chunk");
+      glb_bin_ = s.substr(bin + 8, n);
+      have_glb_bin_ = true;
+    }
+    return s.substr(20, json_length);
+  }
+
+  void check_asset() {
+    const json* asset = member(doc_, "asset");
+    if (!asset) bad("", "\"asset\" is required (glTF 2.0 section 5.2)");
+    object(*asset, "/asset");
+    const json* version = member(*asset, "version");
+    if (!version) bad("/asset", "\"version\" is required");
+    std::string v = text(*version, "/asset/version");
+    if (v.rfind("2.", 0) != 0) bad("/asset/version", "glTF ", v, " is not glTF 2.x");
+    for (const json& e : list("extensionsRequired"))
+      if (!e.is_string() || !kSupportedExtensions.count(e.get<std::string>()))
+        bad("/extensionsRequired", "required extension ", e.dump(),
+            " is not supported by twinray (section 3.12: a loader must then refuse the asset)");
+  }
+
+  void read_parameters() {
+    for (const auto& [name, value] : options_.defines) {
+      bool known_name = false;
+      for (const char* p : kParameterNames) known_name = known_name || name == p;
+      if (!known_name && !options_.unused_defines_allowed)
+        fail(at(""), "-D ", name, "=", value,
+             " is not used: a glTF scene takes -D width, height, spp and max_depth");
+    }
+  }
+
+  // -D `name` as a positive (or, for max_depth, >= -1) integer, or `fallback`.
+  long long define(const std::string& name, long long fallback, bool* given = nullptr) const {
+    auto d = options_.defines.find(name);
+    if (given) *given = d != options_.defines.end();
+    if (d == options_.defines.end()) return fallback;
+    size_t used = 0;
+    long long v = 0;
+    try {
+      v = std::stoll(d->second, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != d->second.size())
+      fail(at(""), "-D ", name, "=", d->second, ": expected an integer");
+    return v;
+  }
+
+  void report_top_level() {
+    known(doc_, "",
+          {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
+           "materials", "textures", "images", "samplers", "cameras", "extensionsUsed",
+           "extensionsRequired", "extensions"});
+    if (const json* e = member(doc_, "extensions"))
+      extensions(*e, "/extensions", {"KHR_lights_punctual"});
+    const json& used = list("extensionsUsed");
+    for (size_t i = 0; i < used.size(); ++i)
+      if (!used[i].is_string() || !kSupportedExtensions.count(used[i].get<std::string>()))
+        warn("/extensionsUsed/" + std::to_string(i), "extension ", used[i].dump(),
+             " not supported by twinray, its fields are ignored");
+    // Section 5.26 (sampler): twinray's bitmaps filter bilinearly and wrap by repeating, the
+    // glTF defaults (linear filtering is the usual choice when undefined; wrap 10497 REPEAT).
+    const json& samplers = list("samplers");
+    for (size_t i = 0; i < samplers.size(); ++i) {
+      std::string p = "/samplers/" + std::to_string(i);
+      const json& s = object(samplers[i], p);
+      known(s, p, {"magFilter", "minFilter", "wrapS", "wrapT"});
+      for (const char* key : {"wrapS", "wrapT"})
+        if (const json* w = member(s, key); w && !(w->is_number_integer() && *w == 10497))
+          warn(p + "/" + key, "ignored: twinray's textures wrap by repeating (10497)");
+      if (const json* f = member(s, "magFilter"); f && !(f->is_number_integer() && *f == 9729))
+        warn(p + "/magFilter", "ignored: twinray's textures filter bilinearly (9729 LINEAR)");
+      if (member(s, "minFilter"))
+        warn(p + "/minFilter", "ignored: twinray's textures are not mipmapped; bilinear");
+    }
+  }
+
+  // --- geometry through Assimp ---
+
+  void load_geometry() {
+    // Assimp's glTF 2.0 importer makes one aiMesh per primitive, meshes in order and their
+    // primitives in order (glTF2Importer::ImportMeshes), strips and fans as triangles.
+    const aiScene* scene =
+        importer_.ReadFile(path_, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
+    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+      fail(Location{path_, 0}, "Assimp cannot read the file: ", importer_.GetErrorString());
+    ai_ = scene;
+    const json& meshes = list("meshes");
+    unsigned offset = 0;
+    for (size_t m = 0; m < meshes.size(); ++m) {
+      std::string p = "/meshes/" + std::to_string(m);
+      const json* prims = member(object(meshes[m], p), "primitives");
+      if (!prims) bad(p, "\"primitives\" is required");
+      mesh_offsets_.push_back(offset);
+      offset += unsigned(array(*prims, p + "/primitives").size());
+    }
+    if (offset != ai_->mNumMeshes)
+      fail(Location{path_, 0}, "Assimp read ", ai_->mNumMeshes, " primitives where the file has ",
+           offset);
+  }
+
+  // The PLY file of Assimp mesh `i` (written once): float x y z, nx ny nz when the primitive
+  // has NORMAL, u v when it has TEXCOORD_0, faces as `list uchar int vertex_indices` (the form of
+  // Mitsuba's ply plugin, scenes/mesh.cpp).
+  std::string ply_file(unsigned i) {
+    auto it = plys_.find(i);
+    if (it != plys_.end()) return it->second;
+    const aiMesh& m = *ai_->mMeshes[i];
+    fs::path file = work_ / ("gltf_mesh_" + std::to_string(i) + ".ply");
+    std::ofstream f(file, std::ios::binary);
+    bool normals = m.HasNormals(), uv = m.HasTextureCoords(0);
+    f << "ply\nformat binary_little_endian 1.0\ncomment written by twinray from a glTF primitive\n"
+      << "element vertex " << m.mNumVertices
+      << "\nproperty float x\nproperty float y\nproperty float z\n"
+      << (normals ? "property float nx\nproperty float ny\nproperty float nz\n" : "")
+      << (uv ? "property float u\nproperty float v\n" : "") << "element face " << m.mNumFaces
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+    auto put = [&](auto value) { f.write(reinterpret_cast<const char*>(&value), sizeof value); };
+    for (unsigned k = 0; k < m.mNumVertices; ++k) {
+      put(m.mVertices[k].x), put(m.mVertices[k].y), put(m.mVertices[k].z);
+      if (normals) put(m.mNormals[k].x), put(m.mNormals[k].y), put(m.mNormals[k].z);
+      // Assimp stores glTF's v as 1 - v (glTF2Importer flips it to its bottom-left origin);
+      // undone here: glTF's uv origin is the image's top-left (section 3.8.4.2), as Mitsuba's.
+      if (uv) put(m.mTextureCoords[0][k].x), put(1.0f - m.mTextureCoords[0][k].y);
+    }
+    for (unsigned k = 0; k < m.mNumFaces; ++k) {
+      put(uint8_t(3));
+      for (int c = 0; c < 3; ++c) put(int32_t(m.mFaces[k].mIndices[c]));
+    }
+    if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
+    return plys_[i] = file.string();
+  }
+
+  // --- node tree helpers ---
+
+  NodePtr make(const std::string& tag, const std::string& type, const std::string& pointer) {
+    auto n = std::make_shared<Node>();
+    n->tag = tag;
+    n->type = type;
+    n->loc = at(pointer);
+    return n;
+  }
+  Property& add(Node& n, const std::string& name, PropertyKind kind, const std::string& pointer) {
+    Property p;
+    p.name = name;
+    p.kind = kind;
+    p.loc = at(pointer);
+    n.props.push_back(p);
+    return n.props.back();
+  }
+  void add_float(Node& n, const std::string& name, double v, const std::string& pointer) {
+    add(n, name, PropertyKind::Float, pointer).number = v;
+  }
+  void add_color(Node& n, const std::string& name, glm::dvec3 v, const std::string& pointer) {
+    add(n, name, PropertyKind::Color, pointer).vec = v;
+  }
+  void add_object(Node& n, NodePtr o, const std::string& pointer) {
+    add(n, "_arg_" + std::to_string(unnamed_++), PropertyKind::Object, pointer).object = o;
+  }
+  void add_transform(Node& n, const glm::dmat4& m, const std::string& pointer) {
+    add(n, "to_world", PropertyKind::Transform, pointer).matrix = m;
+  }
+
+  // --- scene graph (section 3.5: nodes and hierarchy) ---
+
+  // Section 3.5.2: `matrix` (column-major), or T * R * S from translation, rotation (unit
+  // quaternion x, y, z, w) and scale.
+  glm::dmat4 local_transform(const json& n, const std::string& p) {
+    if (const json* m = member(n, "matrix")) {
+      if (member(n, "translation") || member(n, "rotation") || member(n, "scale"))
+        bad(p, "\"matrix\" and TRS properties together (section 5.25 forbids it)");
+      std::vector<double> v = numbers(*m, p + "/matrix", 16);
+      return glm::make_mat4(v.data());
+    }
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
+    if (const json* v = member(n, "translation")) {
+      std::vector<double> a = numbers(*v, p + "/translation", 3);
+      t = glm::translate(glm::dmat4(1.0), glm::dvec3(a[0], a[1], a[2]));
+    }
+    if (const json* v = member(n, "rotation")) {
+      std::vector<double> a = numbers(*v, p + "/rotation", 4);
+      glm::dquat q(a[3], a[0], a[1], a[2]);  // glm takes w first
+      if (!(glm::length(q) > 0.0)) bad(p + "/rotation", "a zero quaternion");
+      r = glm::mat4_cast(glm::normalize(q));
+    }
+    if (const json* v = member(n, "scale")) {
+      std::vector<double> a = numbers(*v, p + "/scale", 3);
+      s = glm::scale(glm::dmat4(1.0), glm::dvec3(a[0], a[1], a[2]));
+    }
+    return t * r * s;
+  }
+
+  void walk_scene() {
+    const json& scenes = list("scenes");
+    const json& nodes = list("nodes");
+    if (scenes.empty()) bad("", "the file has no \"scenes\": nothing to render");
+    size_t chosen = 0;
+    if (const json* s = member(doc_, "scene")) chosen = size_t(index(*s, "/scene", scenes.size()));
+    for (size_t i = 0; i < scenes.size(); ++i)
+      if (i != chosen)
+        warn("/scenes/" + std::to_string(i), "not the default scene (\"scene\": ", chosen,
+             "), ignored");
+    std::string p = "/scenes/" + std::to_string(chosen);
+    const json& scene = object(scenes[chosen], p);
+    known(scene, p, {"nodes"});
+    if (const json* roots = member(scene, "nodes")) {
+      array(*roots, p + "/nodes");
+      for (size_t i = 0; i < roots->size(); ++i)
+        visit(size_t(index((*roots)[i], p + "/nodes/" + std::to_string(i), nodes.size())),
+              glm::dmat4(1.0), 0);
+    }
+  }
+
+  void visit(size_t i, const glm::dmat4& parent, int depth) {
+    std::string p = "/nodes/" + std::to_string(i);
+    const json& nodes = list("nodes");
+    // Section 3.5.1: the node hierarchy is a set of disjoint strict trees.
+    if (depth > int(nodes.size())) bad(p, "the node hierarchy has a cycle");
+    const json& n = object(nodes[i], p);
+    known(
+        n, p,
+        {"camera", "children", "matrix", "mesh", "rotation", "scale", "translation", "extensions"});
+    if (const json* e = member(n, "extensions")) {
+      extensions(*e, p + "/extensions", {"KHR_lights_punctual"});
+      if (const json* l = member(*e, "KHR_lights_punctual")) {
+        std::string lp = p + "/extensions/KHR_lights_punctual";
+        const json* li = member(object(*l, lp), "light");
+        if (!li) bad(lp, "\"light\" is required");
+        light_nodes_.push_back({size_t(index(*li, lp + "/light", lights_.size())), i});
+      }
+    }
+    glm::dmat4 world = parent * local_transform(n, p);
+    worlds_[i] = world;
+    if (const json* c = member(n, "camera")) {
+      index(*c, p + "/camera", list("cameras").size());
+      camera_nodes_.push_back(i);
+    }
+    if (const json* m = member(n, "mesh"))
+      add_mesh(size_t(index(*m, p + "/mesh", list("meshes").size())), world, p);
+    for (const auto& [light, node] : light_nodes_)
+      if (node == i) add_light(light, world, p);
+    if (const json* children = member(n, "children")) {
+      array(*children, p + "/children");
+      for (size_t k = 0; k < children->size(); ++k)
+        visit(size_t(index((*children)[k], p + "/children/" + std::to_string(k), nodes.size())),
+              world, depth + 1);
+    }
+  }
+
+  void add_mesh(size_t m, const glm::dmat4& world, const std::string& node_pointer) {
+    std::string p = "/meshes/" + std::to_string(m);
+    const json& mesh = list("meshes")[m];
+    known(mesh, p, {"primitives"});
+    const json& prims = mesh["primitives"];
+    for (size_t k = 0; k < prims.size(); ++k) {
+      std::string pp = p + "/primitives/" + std::to_string(k);
+      const json& prim = object(prims[k], pp);
+      known(prim, pp, {"attributes", "indices", "material", "mode"});
+      int mode = int(number_or(prim, "mode", kTriangles, pp));
+      if (mode != kTriangles && mode != kTriangleStrip && mode != kTriangleFan) {
+        warn(pp + "/mode", "points and lines (mode ", mode, ") are not rendered, ignored");
+        continue;
+      }
+      const json* attributes = member(prim, "attributes");
+      if (!attributes || !attributes->contains("POSITION"))
+        bad(pp, "\"attributes\" with POSITION is required");
+      for (const auto& [name, value] : attributes->items()) {
+        std::string ap = pp + "/attributes/" + name;
+        if (name == "POSITION" || name == "NORMAL" || name == "TEXCOORD_0") continue;
+        if (name == "TANGENT")
+          warn(ap,
+               "ignored: the normal map's tangent frame is Mitsuba's normalmap frame (the "
+               "triangle's dp/du, bitangent = normal x tangent)");
+        else if (name.rfind("TEXCOORD_", 0) == 0)
+          warn(ap, "ignored: only TEXCOORD_0 is read");
+        else if (name.rfind("COLOR_", 0) == 0)
+          warn(ap, "vertex colors are not supported by twinray, ignored");
+        else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
+          warn(ap, "skinning is not supported by twinray, ignored");
+        else
+          warn(ap, "attribute not supported by twinray, ignored");
+      }
+      unsigned ai = mesh_offsets_[m] + unsigned(k);
+      const aiMesh& am = *ai_->mMeshes[ai];
+      if (am.mPrimitiveTypes & (aiPrimitiveType_POINT | aiPrimitiveType_LINE))
+        bad(pp, "Assimp read points or lines from a triangle primitive");
+      if (am.mNumFaces == 0) {
+        warn(pp, "no triangles, ignored");
+        continue;
+      }
+      NodePtr s = make("shape", "ply", pp);
+      add(*s, "filename", PropertyKind::String, pp).text = ply_file(ai);
+      // Section 3.7.2.1: without NORMAL, flat normals.
+      if (!am.HasNormals()) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
+      add_transform(*s, world, node_pointer);
+      long long material = -1;
+      if (const json* mi = member(prim, "material"))
+        material = index(*mi, pp + "/material", list("materials").size());
+      attach(*s, material, pp);
+      add_object(*root_, s, pp);
+    }
+  }
+
+  // --- materials (section 3.9) ---
+
+  struct MaterialNodes {
+    NodePtr bsdf;
+    glm::dvec3 emission{0.0};
+    std::string pointer;
+  };
+
+  void attach(Node& s, long long material, const std::string& prim_pointer) {
+    auto it = materials_.find(material);
+    if (it == materials_.end()) it = materials_.emplace(material, material_nodes(material)).first;
+    const MaterialNodes& m = it->second;
+    add_object(s, m.bsdf, prim_pointer);
+    if (m.emission != glm::dvec3(0.0)) {
+      NodePtr area = make("emitter", "area", m.pointer);
+      add_color(*area, "radiance", m.emission, m.pointer);
+      add_object(s, area, prim_pointer);
+    }
+  }
+
+  // The bitmap of texture reference `info` (a textureInfo, section 5.28) baked as `what`, with
+  // `factor` multiplied in (Normal: the normal texture's scale on x and y).
+  NodePtr map(const json& info, const std::string& p, Bake what, glm::dvec3 factor) {
+    object(info, p);
+    const json* ti = member(info, "index");
+    if (!ti) bad(p, "\"index\" is required");
+    const json& textures = list("textures");
+    size_t t = size_t(index(*ti, p + "/index", textures.size()));
+    std::set<std::string> fields = {"index", "texCoord"};
+    if (what == Bake::Normal) fields.insert("scale");
+    if (const json* tc = member(info, "texCoord"); tc && !(tc->is_number_integer() && *tc == 0))
+      warn(p + "/texCoord", "ignored: only TEXCOORD_0 is read; the map is read with it");
+    if (const json* e = member(info, "extensions"); e && e->contains("KHR_texture_transform"))
+      warn(p + "/extensions/KHR_texture_transform",
+           "texture transforms are not supported by twinray, ignored");
+    for (const auto& [key, value] : info.items())
+      if (!fields.count(key) && key != "extensions" && key != "extras")
+        warn(p + "/" + key, "not supported by twinray, ignored");
+    if (const json* e = member(info, "extensions"))
+      for (const auto& [key, value] : e->items())
+        if (key != "KHR_texture_transform")
+          warn(p + "/extensions/" + key, "extension not supported by twinray, ignored");
+    std::string tp = "/textures/" + std::to_string(t);
+    const json& tex = object(textures[t], tp);
+    if (!reported_textures_.count(t)) {
+      reported_textures_.insert(t);
+      known(tex, tp, {"sampler", "source"});
+    }
+    const json* source = member(tex, "source");
+    if (!source) bad(tp, "no \"source\" image (twinray reads no texture extension images)");
+    size_t image = size_t(index(*source, tp + "/source", list("images").size()));
+    NodePtr bitmap = make("texture", "bitmap", p);
+    add(*bitmap, "filename", PropertyKind::String, p).text = baked(image, what, factor, p);
+    add(*bitmap, "raw", PropertyKind::Boolean, p).boolean = true;  // PFM: linear values
+    return bitmap;
+  }
+
+  // Base64 (RFC 4648 section 4) of a data: URI.
+  std::string base64(const std::string& s, const std::string& p) const {
+    std::string out;
+    uint32_t acc = 0;
+    int bits = 0;
+    for (char c : s) {
+      int v = c >= 'A' && c <= 'Z'   ? c - 'A'
+              : c >= 'a' && c <= 'z' ? c - 'a' + 26
+              : c >= '0' && c <= '9' ? c - '0' + 52
+              : c == '+'             ? 62
+              : c == '/'             ? 63
+                                     : -1;
+      if (c == '=') break;
+      if (v < 0) bad(p, "invalid base64 in a data URI");
+      acc = (acc << 6) | uint32_t(v);
+      bits += 6;
+      if (bits >= 8) {
+        bits -= 8;
+        out += char((acc >> bits) & 0xFF);
+      }
+    }
+    return out;
+  }
+
+  // The bytes a URI names (section 3.6.1.3 / 5.3: a data URI or a path relative to the file).
+  std::string uri_bytes(const std::string& uri, const std::string& p) const {
+    if (uri.rfind("data:", 0) == 0) {
+      size_t comma = uri.find(',');
+      if (comma == std::string::npos || uri.compare(comma - 7, 7, ";base64") != 0)
+        bad(p, "only base64 data URIs are supported");
+      return base64(uri.substr(comma + 1), p);
+    }
+    std::string name;  // percent-decoded (RFC 3986 section 2.1)
+    for (size_t i = 0; i < uri.size(); ++i) {
+      if (uri[i] == '%' && i + 2 < uri.size()) {
+        name += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        name += uri[i];
+      }
+    }
+    fs::path file = out_.parsed.resolver.resolve(name, dir_);
+    std::error_code ec;
+    if (file.empty() || !fs::is_regular_file(file, ec)) bad(p, "file \"", name, "\" not found");
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream b;
+    b << in.rdbuf();
+    return b.str();
+  }
+
+  std::string image_bytes(size_t i, const std::string& p) {
+    std::string ip = "/images/" + std::to_string(i);
+    const json& img = object(list("images")[i], ip);
+    known(img, ip, {"uri", "mimeType", "bufferView"});
+    if (const json* u = member(img, "uri")) return uri_bytes(text(*u, ip + "/uri"), ip + "/uri");
+    const json* bv = member(img, "bufferView");
+    if (!bv) bad(ip, "neither \"uri\" nor \"bufferView\"");
+    size_t v = size_t(index(*bv, ip + "/bufferView", list("bufferViews").size()));
+    std::string vp = "/bufferViews/" + std::to_string(v);
+    const json& view = object(list("bufferViews")[v], vp);
+    const json* b = member(view, "buffer");
+    const json* len = member(view, "byteLength");
+    if (!b || !len) bad(vp, "\"buffer\" and \"byteLength\" are required");
+    size_t bi = size_t(index(*b, vp + "/buffer", list("buffers").size()));
+    long long offset = (long long)number_or(view, "byteOffset", 0, vp);
+    long long length = (long long)number(*len, vp + "/byteLength");
+    std::string bp = "/buffers/" + std::to_string(bi);
+    const json& buffer = object(list("buffers")[bi], bp);
+    std::string data;
+    if (const json* u = member(buffer, "uri"))
+      data = uri_bytes(text(*u, bp + "/uri"), bp + "/uri");
+    else if (bi == 0 && have_glb_bin_)
+      data = glb_bin_;  // section 4.4.3.3: the GLB-stored buffer
+    else
+      bad(bp, "no \"uri\" and no GLB BIN chunk");
+    if (offset < 0 || length < 0 || size_t(offset + length) > data.size())
+      bad(vp, "bytes ", offset, "..", offset + length, " lie outside the buffer (", data.size(),
+          " bytes)");
+    (void)p;
+    return data.substr(size_t(offset), size_t(length));
+  }
+
+  // Image `i` decoded to linear RGBA (sRGB-decoded when `srgb`: section 3.9.2, baseColor and
+  // emissive textures are sRGB-encoded, the others linear).
+  const Image& image(size_t i, bool srgb, const std::string& p) {
+    auto key = std::make_pair(i, srgb);
+    auto it = images_.find(key);
+    if (it != images_.end()) return it->second;
+    fs::path file = work_ / ("gltf_image_" + std::to_string(i));
+    if (!fs::exists(file)) {
+      std::string bytes = image_bytes(i, p);
+      std::ofstream f(file, std::ios::binary);
+      f.write(bytes.data(), std::streamsize(bytes.size()));
+      if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
+    }
+    try {
+      return images_[key] = load_image(file.string(), !srgb);
+    } catch (const std::exception& e) {
+      std::string what = e.what();
+      size_t cut = what.find(": ");  // "path: what" names the scratch file
+      bad("/images/" + std::to_string(i),
+          "cannot read the image: ", cut == std::string::npos ? what : what.substr(cut + 2));
+    }
+  }
+
+  // Writes image `i` as a PFM (Netpbm portable float map: "PF" colour / "Pf" grey, little-endian
+  // when the scale is negative, rows bottom to top) holding `what` times `factor`, linear.
+  std::string baked(size_t i, Bake what, glm::dvec3 factor, const std::string& p) {
+    std::ostringstream name;
+    name << "gltf_tex_" << i << "_" << int(what) << "_" << factor.x << "_" << factor.y << "_"
+         << factor.z << ".pfm";
+    fs::path file = work_ / name.str();
+    if (fs::exists(file)) return file.string();
+    const Image& img = image(i, what == Bake::Color, p);
+    bool color = what == Bake::Color || what == Bake::Normal;
+    std::ofstream f(file, std::ios::binary);
+    f << (color ? "PF" : "Pf") << "\n" << img.width << " " << img.height << "\n-1.0\n";
+    for (int y = img.height - 1; y >= 0; --y) {
+      for (int x = 0; x < img.width; ++x) {
+        glm::vec4 c = img.texels[size_t(y) * img.width + x];
+        if (what == Bake::Color) {
+          for (int k = 0; k < 3; ++k) {
+            float v = float(c[k] * factor[k]);
+            f.write(reinterpret_cast<const char*>(&v), 4);
+          }
+        } else if (what == Bake::Normal) {
+          // Section 3.9.3: n = normalize((2 c - 1) * (scale, scale, 1)); stored back as (n+1)/2
+          // before normalising, which Mitsuba's normalmap does after 2 c - 1 (a linear map, so
+          // it commutes with bilinear filtering).
+          for (int k = 0; k < 3; ++k) {
+            float v = float(((2.0 * c[k] - 1.0) * factor[k] + 1.0) * 0.5);
+            f.write(reinterpret_cast<const char*>(&v), 4);
+          }
+        } else {
+          int k = what == Bake::Red ? 0 : what == Bake::Green ? 1 : 2;
+          float v = float(c[k] * factor.x);
+          f.write(reinterpret_cast<const char*>(&v), 4);
+        }
+      }
+    }
+    if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
+    return file.string();
+  }
+
+  glm::dvec3 rgb(const json& o, const char* key, glm::dvec3 fallback, const std::string& p,
+                 size_t n = 3) {
+    const json* v = member(o, key);
+    if (!v) return fallback;
+    std::vector<double> a = numbers(*v, p + "/" + key, n);
+    return {a[0], a[1], a[2]};
+  }
+
+  MaterialNodes material_nodes(long long index) {
+    MaterialNodes out;
+    json none = json::object();
+    // Section 3.9.6: a primitive without material uses the default material (the
+    // metallic-roughness defaults: base colour 1, metallic 1, roughness 1).
+    std::string p = index < 0 ? std::string("/meshes") : "/materials/" + std::to_string(index);
+    const json& m = index < 0 ? none : object(list("materials")[size_t(index)], p);
+    out.pointer = p;
+    known(m, p,
+          {"pbrMetallicRoughness", "normalTexture", "occlusionTexture", "emissiveTexture",
+           "emissiveFactor", "alphaMode", "alphaCutoff", "doubleSided", "extensions"});
+    NodePtr bsdf = make("bsdf", "principled", p);
+    const json* pbr = member(m, "pbrMetallicRoughness");
+    std::string pp = p + "/pbrMetallicRoughness";
+    json empty = json::object();
+    const json& r = pbr ? object(*pbr, pp) : empty;
+    if (pbr)
+      known(r, pp,
+            {"baseColorFactor", "baseColorTexture", "metallicFactor", "roughnessFactor",
+             "metallicRoughnessTexture"});
+    glm::dvec3 base = rgb(r, "baseColorFactor", glm::dvec3(1.0), pp, 4);
+    std::string alpha_mode = "OPAQUE";
+    if (const json* a = member(m, "alphaMode")) alpha_mode = text(*a, p + "/alphaMode");
+    if (const json* f = member(r, "baseColorFactor"); f && (*f)[3] != 1.0 && alpha_mode != "OPAQUE")
+      warn(pp + "/baseColorFactor", "alpha ignored: twinray renders the material opaque");
+    if (alpha_mode != "OPAQUE")
+      warn(p + "/alphaMode", alpha_mode, " ignored: twinray renders the material opaque");
+    if (member(m, "alphaCutoff")) warn(p + "/alphaCutoff", "ignored (the material is opaque)");
+    double metallic = number_or(r, "metallicFactor", 1.0, pp);
+    double roughness = number_or(r, "roughnessFactor", 1.0, pp);
+    if (const json* t = member(r, "baseColorTexture"))
+      add(*bsdf, "base_color", PropertyKind::Object, pp + "/baseColorTexture").object =
+          map(*t, pp + "/baseColorTexture", Bake::Color, base);
+    else
+      add_color(*bsdf, "base_color", base, pp);
+    if (const json* t = member(r, "metallicRoughnessTexture")) {
+      std::string tp = pp + "/metallicRoughnessTexture";
+      add(*bsdf, "metallic", PropertyKind::Object, tp).object =
+          map(*t, tp, Bake::Blue, glm::dvec3(metallic));
+      add(*bsdf, "roughness", PropertyKind::Object, tp).object =
+          map(*t, tp, Bake::Green, glm::dvec3(roughness));
+    } else {
+      add_float(*bsdf, "metallic", metallic, pp);
+      add_float(*bsdf, "roughness", roughness, pp);
+    }
+    bool transmits = false;
+    double strength = 1.0;  // KHR_materials_emissive_strength
+    if (const json* e = member(m, "extensions")) {
+      extensions(
+          *e, p + "/extensions",
+          {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_emissive_strength"});
+      if (const json* t = member(*e, "KHR_materials_transmission")) {
+        std::string tp = p + "/extensions/KHR_materials_transmission";
+        known(object(*t, tp), tp, {"transmissionFactor", "transmissionTexture"});
+        double factor = number_or(*t, "transmissionFactor", 0.0, tp);
+        transmits = factor > 0.0;
+        if (const json* tt = member(*t, "transmissionTexture"))
+          add(*bsdf, "spec_trans", PropertyKind::Object, tp).object =
+              map(*tt, tp + "/transmissionTexture", Bake::Red, glm::dvec3(factor));
+        else
+          add_float(*bsdf, "spec_trans", factor, tp);
+      }
+      if (const json* i = member(*e, "KHR_materials_ior")) {
+        std::string ip = p + "/extensions/KHR_materials_ior";
+        known(object(*i, ip), ip, {"ior"});
+        double ior = number_or(*i, "ior", 1.5, ip);
+        if (!(ior > 1.0)) bad(ip + "/ior", "twinray's principled needs an ior above 1");
+        add_float(*bsdf, "eta", ior, ip);
+      }
+      if (const json* s = member(*e, "KHR_materials_emissive_strength")) {
+        std::string sp = p + "/extensions/KHR_materials_emissive_strength";
+        known(object(*s, sp), sp, {"emissiveStrength"});
+        strength = number_or(*s, "emissiveStrength", 1.0, sp);
+      }
+    }
+    if (const json* t = member(m, "normalTexture")) {
+      std::string np = p + "/normalTexture";
+      double scale = number_or(object(*t, np), "scale", 1.0, np);
+      NodePtr outer = make("bsdf", "normalmap", np);
+      add(*outer, "normalmap", PropertyKind::Object, np).object =
+          map(*t, np, Bake::Normal, glm::dvec3(scale, scale, 1.0));
+      add_object(*outer, bsdf, np);
+      bsdf = outer;
+      warn(np,
+           "approximate: Mitsuba's normalmap frame (tangent along the triangle's dp/du, "
+           "bitangent = normal x tangent) instead of MikkTSpace vertex tangents");
+    }
+    if (member(m, "occlusionTexture"))
+      warn(p + "/occlusionTexture", "ignored: the path tracer computes occlusion itself");
+    bool double_sided = false;
+    if (const json* d = member(m, "doubleSided")) {
+      if (!d->is_boolean()) bad(p + "/doubleSided", "expected true or false");
+      double_sided = d->get<bool>();
+    }
+    if (double_sided && !transmits) {
+      NodePtr two = make("bsdf", "twosided", p + "/doubleSided");
+      add_object(*two, bsdf, p + "/doubleSided");
+      bsdf = two;
+    } else if (double_sided) {
+      warn(p + "/doubleSided",
+           "ignored for a transmissive material (Mitsuba's twosided refuses transmission)");
+    }
+    glm::dvec3 emission = rgb(m, "emissiveFactor", glm::dvec3(0.0), p) * strength;
+    if (const json* t = member(m, "emissiveTexture")) {
+      // Constant emission only (scenes/build_shapes.cpp): the factor times the texture's mean.
+      std::string ep = p + "/emissiveTexture";
+      object(*t, ep);
+      map(*t, ep, Bake::Color, glm::dvec3(1.0));  // checks and reports the reference
+      const json& tex = list("textures")[(*t)["index"].get<size_t>()];
+      size_t img = tex["source"].get<size_t>();
+      const Image& im = image(img, true, ep);
+      glm::dvec3 mean(0.0);
+      for (const glm::vec4& c : im.texels) mean += glm::dvec3(c);
+      mean /= double(std::max<size_t>(im.texels.size(), 1));
+      emission *= mean;
+      warn(ep,
+           "approximate: twinray's area lights emit a constant radiance; emissiveFactor times "
+           "the texture's mean (",
+           mean.x, ", ", mean.y, ", ", mean.z, ")");
+    }
+    out.emission = emission;
+    add_object(*root_, bsdf, p);
+    out.bsdf = bsdf;
+    return out;
+  }
+
+  // --- lights (KHR_lights_punctual) ---
+
+  void read_lights() {
+    const json* e = member(doc_, "extensions");
+    const json* l = e ? member(*e, "KHR_lights_punctual") : nullptr;
+    if (!l) return;
+    std::string p = "/extensions/KHR_lights_punctual";
+    const json* ls = member(object(*l, p), "lights");
+    if (!ls) return;
+    array(*ls, p + "/lights");
+    for (size_t i = 0; i < ls->size(); ++i)
+      lights_.push_back(object((*ls)[i], p + "/lights/" + std::to_string(i)));
+  }
+
+  // KHR_lights_punctual: point and spot intensity in candela (lm/sr), directional in lux
+  // (lm/m^2), colour linear RGB; the light at the node's origin, spot and directional along its
+  // -z. Photometric units are read as the radiometric ones with a factor of 1 (cd -> W/sr,
+  // lux -> W/m^2), the factor under which emissiveFactor (cd/m^2 with
+  // KHR_materials_emissive_strength) is read as radiance, so lights keep their ratios.
+  void add_light(size_t i, const glm::dmat4& world, const std::string& node_pointer) {
+    std::string p = "/extensions/KHR_lights_punctual/lights/" + std::to_string(i);
+    const json& l = lights_[i];
+    known(l, p, {"type", "color", "intensity", "range", "spot"});
+    const json* t = member(l, "type");
+    if (!t) bad(p, "\"type\" is required");
+    std::string type = text(*t, p + "/type");
+    glm::dvec3 color = rgb(l, "color", glm::dvec3(1.0), p);
+    double intensity = number_or(l, "intensity", 1.0, p);
+    if (intensity < 0.0) bad(p + "/intensity", "must not be negative");
+    if (member(l, "range"))
+      warn(p + "/range",
+           "ignored: twinray's lights fall off with the inverse square law without a cutoff");
+    glm::dvec3 origin(world[3]);
+    glm::dvec3 forward = glm::dvec3(world * glm::dvec4(0, 0, -1, 0));
+    glm::dvec3 up = glm::dvec3(world * glm::dvec4(0, 1, 0, 0));
+    NodePtr e;
+    if (type == "point") {
+      e = make("emitter", "point", p);
+      add(*e, "position", PropertyKind::Point, node_pointer).vec = origin;
+      add_color(*e, "intensity", color * intensity, p);
+    } else if (type == "spot") {
+      e = make("emitter", "spot", p);
+      std::string sp = p + "/spot";
+      json empty = json::object();
+      const json& s = l.contains("spot") ? object(l["spot"], sp) : empty;
+      known(s, sp, {"innerConeAngle", "outerConeAngle"});
+      double inner = number_or(s, "innerConeAngle", 0.0, sp);
+      double outer = number_or(s, "outerConeAngle", M_PI / 4.0, sp);
+      if (!(inner >= 0.0 && inner < outer && outer <= M_PI / 2.0))
+        bad(sp, "needs 0 <= innerConeAngle < outerConeAngle <= pi/2");
+      add_color(*e, "intensity", color * intensity, p);
+      add_float(*e, "cutoff_angle", glm::degrees(outer), sp);
+      add_float(*e, "beam_width", glm::degrees(inner), sp);
+      add_transform(*e, look_at(origin, origin + forward, up, at(node_pointer)), node_pointer);
+      warn(sp,
+           "approximate: Mitsuba's spot falls off linearly in angle between the cone angles; "
+           "KHR_lights_punctual recommends a smooth falloff in cos(angle)");
+    } else if (type == "directional") {
+      e = make("emitter", "directional", p);
+      if (!(glm::length(forward) > 0.0)) bad(node_pointer, "the light's direction is zero");
+      add(*e, "direction", PropertyKind::Vector, node_pointer).vec = glm::normalize(forward);
+      add_color(*e, "irradiance", color * intensity, p);
+    } else {
+      bad(p + "/type", "unknown light type \"", type, "\" (point, spot or directional)");
+    }
+    add_object(*root_, e, p);
+  }
+
+  // --- camera (section 3.10) and integrator ---
+
+  void add_sensor() {
+    const json& cameras = list("cameras");
+    if (camera_nodes_.empty())
+      bad("",
+          "no node of the scene has a camera: twinray renders through the file's first "
+          "camera node (glTF 2.0 section 3.10)");
+    size_t node = camera_nodes_.front();
+    for (size_t k = 1; k < camera_nodes_.size(); ++k)
+      warn("/nodes/" + std::to_string(camera_nodes_[k]) + "/camera",
+           "ignored: twinray renders through the first camera node, nodes[", node, "]");
+    std::string np = "/nodes/" + std::to_string(node);
+    size_t ci = size_t(list("nodes")[node]["camera"].get<long long>());
+    std::string p = "/cameras/" + std::to_string(ci);
+    const json& c = object(cameras[ci], p);
+    known(c, p, {"type", "perspective", "orthographic"});
+    const json* type = member(c, "type");
+    if (!type) bad(p, "\"type\" is required");
+    if (text(*type, p + "/type") != "perspective")
+      bad(p + "/type", "only perspective cameras are supported by twinray");
+    const json* persp = member(c, "perspective");
+    if (!persp) bad(p, "\"perspective\" is required");
+    std::string pp = p + "/perspective";
+    object(*persp, pp);
+    known(*persp, pp, {"yfov", "aspectRatio", "znear", "zfar"});
+    const json* yfov = member(*persp, "yfov");
+    const json* znear = member(*persp, "znear");
+    if (!yfov || !znear) bad(pp, "\"yfov\" and \"znear\" are required");
+    double fov = glm::degrees(number(*yfov, pp + "/yfov"));
+    if (!(fov > 0.0 && fov < 180.0)) bad(pp + "/yfov", "must be in (0, pi) radians");
+    double near = number(*znear, pp + "/znear");
+    if (!(near > 0.0)) bad(pp + "/znear", "must be positive");
+
+    NodePtr sensor = make("sensor", "perspective", p);
+    add_float(*sensor, "fov", fov, pp + "/yfov");
+    add(*sensor, "fov_axis", PropertyKind::String, pp + "/yfov").text = "y";
+    add_float(*sensor, "near_clip", near, pp + "/znear");
+    if (const json* zfar = member(*persp, "zfar")) {
+      double far = number(*zfar, pp + "/zfar");
+      if (!(far > near)) bad(pp + "/zfar", "must exceed znear");
+      add_float(*sensor, "far_clip", far, pp + "/zfar");
+    } else {
+      // Section 3.10.3: no zfar is an infinite projection.
+      add_float(*sensor, "far_clip", 1e30, pp);
+    }
+    // glTF cameras look along -z with +y up and +x right; Mitsuba's along +z with +x left.
+    const glm::dmat4& w = worlds_.at(node);
+    glm::dvec3 origin(w[3]);
+    glm::dvec3 forward(w * glm::dvec4(0, 0, -1, 0)), up(w * glm::dvec4(0, 1, 0, 0));
+    add_transform(*sensor, look_at(origin, origin + forward, up, at(np)), np);
+
+    double aspect = 0.0;
+    if (const json* a = member(*persp, "aspectRatio")) {
+      aspect = number(*a, pp + "/aspectRatio");
+      if (!(aspect > 0.0)) bad(pp + "/aspectRatio", "must be positive");
+    }
+    bool have_w = false, have_h = false;
+    long long width = define("width", 0, &have_w), height = define("height", 0, &have_h);
+    if (!have_h)
+      height =
+          have_w && aspect > 0.0 ? std::max(1LL, std::llround(width / aspect)) : kDefaultHeight;
+    if (!have_w)
+      width = aspect > 0.0 ? std::max(1LL, std::llround(height * aspect)) : kDefaultWidth;
+    if (have_w && have_h && aspect > 0.0 && std::abs(double(width) / height - aspect) > 1e-2)
+      warn(pp + "/aspectRatio", "the image is ", width, "x", height,
+           " (-D width, height): yfov is kept, the horizontal field of view follows the image");
+    NodePtr film = make("film", "hdrfilm", p);
+    add(*film, "width", PropertyKind::Integer, p).integer = width;
+    add(*film, "height", PropertyKind::Integer, p).integer = height;
+    add(*film, "component_format", PropertyKind::String, p).text = "float32";
+    add_object(*sensor, film, p);
+    NodePtr sampler = make("sampler", "independent", p);
+    add(*sampler, "sample_count", PropertyKind::Integer, p).integer = define("spp", kDefaultSpp);
+    add_object(*sensor, sampler, p);
+    add_object(*root_, sensor, p);
+  }
+
+  void add_integrator() {
+    NodePtr path = make("integrator", "path", "");
+    add(*path, "max_depth", PropertyKind::Integer, "").integer = define("max_depth", -1);
+    add_object(*root_, path, "");
+  }
+
+  std::string path_;
+  const LoadOptions& options_;
+  fs::path work_;
+  fs::path dir_;
+  std::string glb_bin_;
+  bool have_glb_bin_ = false;
+  json doc_;
+  std::map<std::string, int> lines_;
+  Assimp::Importer importer_;
+  const aiScene* ai_ = nullptr;
+  std::vector<unsigned> mesh_offsets_;
+  std::map<unsigned, std::string> plys_;
+  std::map<std::pair<size_t, bool>, Image> images_;
+  std::map<long long, MaterialNodes> materials_;
+  std::set<size_t> reported_textures_;
+  std::vector<json> lights_;
+  std::vector<std::pair<size_t, size_t>> light_nodes_;  // (light, node)
+  std::vector<size_t> camera_nodes_;
+  std::map<size_t, glm::dmat4> worlds_;
+  GltfScene out_;
+  NodePtr root_;
+  std::set<std::string> warned_;
+  int unnamed_ = 0;
+};
+
+}  // namespace
+
+bool is_gltf(const std::string& path) {
+  std::string e = fs::path(path).extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e == ".gltf" || e == ".glb";
+}
+
+GltfScene import_gltf(const std::string& path, const LoadOptions& options,
+                      const fs::path& work_dir) {
+  return Importer(path, options, work_dir).run();
+}
+
+}  // namespace tr
