@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/arguments.h"
 #include "app/exit_codes.h"
@@ -24,6 +25,7 @@
 #include "render/error_estimate.h"
 #include "render/film_error.h"
 #include "render/write_result.h"
+#include "scenes/guide_aovs.h"
 #include "scenes/load_scene.h"
 #include "scenes/sampler.h"
 #include "scenes/scene_digest.h"
@@ -34,7 +36,7 @@ namespace {
 const char* kUsage =
     "usage: twinray render SCENE [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
-    "                      [--randomizations K]\n"
+    "                      [--randomizations K] [--aov LIST]\n"
     "  Renders a Mitsuba 3 XML scene, or a .scn scene (-D width, height, spp, max_depth;\n"
     "  scenes/README.md). Writes OUT.exr (mean radiance, RGB in the film's\n"
     "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
@@ -48,6 +50,12 @@ const char* kUsage =
     "                  rounds sample_count (spp becomes K times that); with K >= 2 the variance\n"
     "                  output estimates the error from the passes (K >= 16 for --target-error).\n"
     "                  independent: accepted, changes nothing. Default: one pass\n"
+    "  --aov LIST      also write denoiser guide buffers: the scene's integrator is wrapped in\n"
+    "                  Mitsuba's aov integrator (scenes/guide_aovs.h), its colour stays R, G, B;\n"
+    "                  LIST is comma-separated TYPE or NAME:TYPE (channels NAME.R/G/B, .X/Y/Z,\n"
+    "                  .T, .U/V or .I), e.g. albedo,sh_normal,depth. Types: albedo, depth,\n"
+    "                  position, uv, geo_normal, sh_normal, prim_index, shape_index. Refused\n"
+    "                  when the scene's integrator is already aov; --resume needs the same LIST\n"
     "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
@@ -73,7 +81,8 @@ struct RenderArgs {
   RenderBudget budget;
   double checkpoint_seconds = 0.0;  // 0: no checkpoints
   std::string resume;
-  std::uint32_t randomizations = 0;  // 0: not asked for (one pass, Mitsuba semantics)
+  std::uint32_t randomizations = 0;    // 0: not asked for (one pass, Mitsuba semantics)
+  std::vector<std::string> aov_lists;  // each --aov's LIST
 };
 
 double positive_number(const std::string& option, const std::string& value) {
@@ -118,6 +127,8 @@ RenderArgs parse(int argc, char** argv) {
       a.randomizations = args.uint_value(arg, 1);
     } else if (arg == "--resume") {
       a.resume = args.value(arg);
+    } else if (arg == "--aov") {
+      a.aov_lists.push_back(args.value(arg));
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option '" + arg + "'");
     } else if (a.scene.empty()) {
@@ -127,6 +138,15 @@ RenderArgs parse(int argc, char** argv) {
     }
   }
   if (a.scene.empty()) throw UsageError("no scene file given");
+  if (!a.aov_lists.empty()) {
+    std::string joined;  // several --aov options add up
+    for (const std::string& list : a.aov_lists) joined += (joined.empty() ? "" : ",") + list;
+    try {
+      a.load.guide_aovs = parse_guide_aovs(joined);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--aov: ") + e.what());
+    }
+  }
   if (a.output.empty()) a.output = std::filesystem::path(a.scene).stem().string() + ".exr";
   return a;
 }

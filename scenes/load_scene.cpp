@@ -111,6 +111,7 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
     TemporaryDirectory meshes;
     ScnScene scn = import_scn(path, options, meshes.path(), "scn", false);
     check_plugins(*scn.parsed.root);
+    if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*scn.parsed.root, options.guide_aovs);
     Scene scene = SceneBuilder(std::move(scn.parsed), path).build();
     for (const std::string& w : scn.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return scene;
@@ -125,6 +126,7 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
   }
   ParsedScene parsed = parse_scene_xml(path, options);
   check_plugins(*parsed.root);
+  if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*parsed.root, options.guide_aovs);
   SceneBuilder builder(std::move(parsed), path);
   return builder.build();
 }

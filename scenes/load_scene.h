@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/guide_aovs.h"
 #include "scenes/scene.h"
 
 namespace tr {
@@ -15,6 +16,9 @@ struct LoadOptions {
   // A define that no $name uses is an error unless this is set (a tool that passes the same
   // defines to many scenes, as Mitsuba's documentation script passes spp).
   bool unused_defines_allowed = false;
+  // --aov: when not empty, the scene's integrator is wrapped in an `aov` integrator with these
+  // output variables (scenes/guide_aovs.h), whatever the scene's format.
+  std::vector<GuideAov> guide_aovs;
 };
 
 // Parses and builds the scene, a Mitsuba 3 XML file or, by the extension `.scn`, a .scn JSON
