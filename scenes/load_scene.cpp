@@ -120,6 +120,7 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
     TemporaryDirectory work;
     GltfScene gltf = import_gltf(path, options, work.path());
     check_plugins(*gltf.parsed.root);
+    if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*gltf.parsed.root, options.guide_aovs);
     Scene scene = SceneBuilder(std::move(gltf.parsed), path).build();
     for (const std::string& w : gltf.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return scene;

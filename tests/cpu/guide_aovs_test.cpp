@@ -110,6 +110,28 @@ TEST(GuideAovsCpu, ScnSceneGetsTheGuides) {
   EXPECT_EQ(scene.buffers.globals.integrator.max_depth, plain.buffers.globals.integrator.max_depth);
 }
 
+// ... and so does a glTF 2.0 one (a triangle seen by a camera node; one data-URI buffer of its
+// three float32 positions).
+TEST(GuideAovsCpu, GltfSceneGetsTheGuides) {
+  const std::string path =
+      write_file("twinray_guide_triangle.gltf",
+                 R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+ "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 3]}],
+ "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [-1, -1, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri":
+   "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]})");
+  Scene plain = load_scene(path, {});
+  Scene scene = load_scene(path, with_guides("albedo,sh_normal,depth"));
+  std::filesystem::remove(path);
+  EXPECT_EQ(plain.buffers.globals.integrator.aov_count, 0u);
+  EXPECT_EQ(scene.integrator_name, "aov(" + plain.integrator_name + ")");
+  EXPECT_EQ(scene.aov_channels, kGuideChannels);
+}
+
 void expect_invalid(const std::string& list, const std::string& message) {
   try {
     parse_guide_aovs(list);
