@@ -1,0 +1,312 @@
+// glTF 2.0 import (scenes/gltf/): the node tree import_gltf builds (transforms, principled
+// parameters, baked texture channels, camera, KHR_lights_punctual units), the warnings for
+// fields that do not map, and the one-line errors for malformed files.
+#include "scenes/gltf/gltf_import.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include "scene_test_files.h"
+#include "scenes/bitmap.h"
+
+namespace tr {
+namespace {
+
+using namespace testing_files;
+using json = nlohmann::json;
+
+std::string base64(const std::string& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
+    if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
+    if (i + 2 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 2]));
+    size_t n = std::min<size_t>(3, bytes.size() - i);  // RFC 4648 section 4: pad with '='
+    for (size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63] : '=';
+  }
+  return out;
+}
+
+// One triangle (0,0,0) (1,0,0) (0,1,0) with uv (0,0) (1,0) (0,1), as a data: URI buffer.
+json triangle_gltf() {
+  std::string bytes;
+  auto put = [&](float f) { bytes.append(reinterpret_cast<const char*>(&f), 4); };
+  for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) put(f);
+  for (float f : {0.f, 0.f, 1.f, 0.f, 0.f, 1.f}) put(f);
+  json g = {{"asset", {{"version", "2.0"}}},
+            {"scene", 0},
+            {"scenes", {{{"nodes", {0, 2}}}}},
+            {"nodes",
+             {{{"translation", {1.0, 2.0, 3.0}}, {"children", {1}}},
+              {{"mesh", 0},
+               {"rotation", {0.0, 0.0, std::sqrt(0.5), std::sqrt(0.5)}},  // 90 degrees about z
+               {"scale", {2.0, 2.0, 2.0}}},
+              {{"camera", 0}, {"translation", {0.0, 0.0, 5.0}}}}},
+            {"cameras",
+             {{{"type", "perspective"},
+               {"perspective", {{"yfov", 0.5}, {"aspectRatio", 2.0}, {"znear", 0.1}}}}}},
+            {"meshes",
+             {{{"primitives",
+                {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"material", 0}}}}}}},
+            {"materials",
+             {{{"pbrMetallicRoughness",
+                {{"baseColorFactor", {0.5, 0.25, 0.125, 1.0}},
+                 {"metallicFactor", 0.25},
+                 {"roughnessFactor", 0.625}}},
+               {"emissiveFactor", {1.0, 2.0, 4.0}},
+               {"extensions",
+                {{"KHR_materials_transmission", {{"transmissionFactor", 0.375}}},
+                 {"KHR_materials_ior", {{"ior", 1.33}}},
+                 {"KHR_materials_emissive_strength", {{"emissiveStrength", 3.0}}}}}}}},
+            {"buffers",
+             {{{"byteLength", bytes.size()},
+               {"uri", "data:application/octet-stream;base64," + base64(bytes)}}}},
+            {"bufferViews",
+             {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+              {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 24}}}},
+            {"accessors",
+             {{{"bufferView", 0},
+               {"componentType", 5126},
+               {"count", 3},
+               {"type", "VEC3"},
+               {"min", {0, 0, 0}},
+               {"max", {1, 1, 0}}},
+              {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
+  return g;
+}
+
+struct Imported {
+  GltfScene scene;
+  std::filesystem::path dir;
+};
+
+Imported import(const json& g, const LoadOptions& options = {}) {
+  std::filesystem::path dir = fresh_dir();
+  std::filesystem::create_directories(dir / "work");
+  std::string path = write_file(dir, "scene.gltf", g.dump(1));
+  return {import_gltf(path, options, dir / "work"), dir};
+}
+
+std::vector<const Node*> all(const Node& n, const std::string& tag, const std::string& type) {
+  std::vector<const Node*> out;
+  if (n.tag == tag && n.type == type) out.push_back(&n);
+  for (const Property& p : n.props)
+    if (p.kind == PropertyKind::Object)
+      for (const Node* c : all(*p.object, tag, type))
+        if (std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+  return out;
+}
+
+const Node& one(const Node& root, const std::string& tag, const std::string& type) {
+  std::vector<const Node*> v = all(root, tag, type);
+  EXPECT_EQ(v.size(), 1u) << tag << " " << type;
+  if (v.empty()) throw std::runtime_error("no " + tag + " " + type);
+  return *v[0];
+}
+
+const Property& prop(const Node& n, const std::string& name) {
+  for (const Property& p : n.props)
+    if (p.name == name) return p;
+  throw std::runtime_error("no property " + name + " on " + n.type);
+}
+
+bool has(const Node& n, const std::string& name) {
+  for (const Property& p : n.props)
+    if (p.name == name) return true;
+  return false;
+}
+
+void expect_vec(glm::dvec3 a, glm::dvec3 b, double tol = 1e-9) {
+  EXPECT_NEAR(a.x, b.x, tol);
+  EXPECT_NEAR(a.y, b.y, tol);
+  EXPECT_NEAR(a.z, b.z, tol);
+}
+
+TEST(GltfImport, TransformsMaterialCameraAndIntegrator) {
+  Imported im = import(triangle_gltf());
+  const Node& root = *im.scene.parsed.root;
+  const Node& shape = one(root, "shape", "ply");
+  // Section 3.5.2: world = parent T * (child T R S).
+  glm::dmat4 expected = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3)) *
+                        glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(0, 0, 1)) *
+                        glm::scale(glm::dmat4(1.0), glm::dvec3(2.0));
+  const glm::dmat4& m = prop(shape, "to_world").matrix;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(m[c][r], expected[c][r], 1e-12) << c << r;
+  EXPECT_TRUE(prop(shape, "face_normals").boolean);  // no NORMAL: flat (section 3.7.2.1)
+
+  // The PLY keeps glTF's uv (Assimp's flip of v undone): vertex 1 has uv (1, 0).
+  std::ifstream ply(prop(shape, "filename").text, std::ios::binary);
+  std::string data((std::istreambuf_iterator<char>(ply)), std::istreambuf_iterator<char>());
+  size_t body = data.find("end_header\n") + 11;
+  float v1[5];
+  std::memcpy(v1, data.data() + body + 20, sizeof v1);
+  EXPECT_EQ(v1[0], 1.0f);
+  EXPECT_EQ(v1[3], 1.0f);
+  EXPECT_EQ(v1[4], 0.0f);
+
+  const Node& bsdf = one(root, "bsdf", "principled");
+  expect_vec(prop(bsdf, "base_color").vec, {0.5, 0.25, 0.125});
+  EXPECT_EQ(prop(bsdf, "metallic").number, 0.25);
+  EXPECT_EQ(prop(bsdf, "roughness").number, 0.625);
+  EXPECT_EQ(prop(bsdf, "spec_trans").number, 0.375);
+  EXPECT_EQ(prop(bsdf, "eta").number, 1.33);
+  const Node& area = one(root, "emitter", "area");
+  expect_vec(prop(area, "radiance").vec, {3.0, 6.0, 12.0});  // emissiveFactor * strength
+
+  const Node& sensor = one(root, "sensor", "perspective");
+  EXPECT_NEAR(prop(sensor, "fov").number, glm::degrees(0.5), 1e-12);
+  EXPECT_EQ(prop(sensor, "fov_axis").text, "y");
+  EXPECT_EQ(prop(sensor, "near_clip").number, 0.1);
+  const glm::dmat4& cam = prop(sensor, "to_world").matrix;
+  expect_vec(glm::dvec3(cam[3]), {0, 0, 5});
+  expect_vec(glm::dvec3(cam[2]), {0, 0, -1});  // looks along glTF's -z
+  expect_vec(glm::dvec3(cam[0]), {-1, 0, 0});  // Mitsuba's +x is the image's left
+  const Node& film = one(root, "film", "hdrfilm");
+  EXPECT_EQ(prop(film, "height").integer, 576);
+  EXPECT_EQ(prop(film, "width").integer, 1152);  // height * aspectRatio
+  EXPECT_EQ(prop(one(root, "integrator", "path"), "max_depth").integer, -1);
+  EXPECT_TRUE(im.scene.warnings.empty()) << im.scene.warnings.front();
+
+  LoadOptions o;
+  o.defines = {{"width", "64"}, {"max_depth", "5"}, {"spp", "3"}};
+  Imported im2 = import(triangle_gltf(), o);
+  const Node& root2 = *im2.scene.parsed.root;
+  EXPECT_EQ(prop(one(root2, "film", "hdrfilm"), "width").integer, 64);
+  EXPECT_EQ(prop(one(root2, "film", "hdrfilm"), "height").integer, 32);
+  EXPECT_EQ(prop(one(root2, "integrator", "path"), "max_depth").integer, 5);
+  EXPECT_EQ(prop(one(root2, "sampler", "independent"), "sample_count").integer, 3);
+}
+
+TEST(GltfImport, PunctualLightsKeepTheirUnitsAndDirections) {
+  json g = triangle_gltf();
+  g["extensionsUsed"] = {"KHR_lights_punctual"};
+  g["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 10.0}},
+      {{"type", "spot"},
+       {"intensity", 4.0},
+       {"spot", {{"innerConeAngle", 0.25}, {"outerConeAngle", 0.5}}}},
+      {{"type", "directional"}, {"intensity", 2.0}}};
+  // A node rotated 90 degrees about x: its -z points along world +y.
+  double h = std::sqrt(0.5);
+  for (int i = 0; i < 3; ++i) {
+    g["nodes"].push_back({{"translation", {0.0, 1.0, 0.0}},
+                          {"rotation", {h, 0.0, 0.0, h}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", i}}}}}});
+    g["scenes"][0]["nodes"].push_back(3 + i);
+  }
+  Imported im = import(g);
+  const Node& root = *im.scene.parsed.root;
+  // Candela and lux read as W/sr and W/m^2 (factor 1), times the colour.
+  const Node& point = one(root, "emitter", "point");
+  expect_vec(prop(point, "intensity").vec, {10.0, 5.0, 2.5});
+  expect_vec(prop(point, "position").vec, {0, 1, 0});
+  const Node& spot = one(root, "emitter", "spot");
+  expect_vec(prop(spot, "intensity").vec, {4.0, 4.0, 4.0});
+  EXPECT_NEAR(prop(spot, "cutoff_angle").number, glm::degrees(0.5), 1e-12);
+  EXPECT_NEAR(prop(spot, "beam_width").number, glm::degrees(0.25), 1e-12);
+  expect_vec(glm::dvec3(prop(spot, "to_world").matrix[2]), {0, 1, 0}, 1e-12);
+  const Node& sun = one(root, "emitter", "directional");
+  expect_vec(prop(sun, "irradiance").vec, {2.0, 2.0, 2.0});
+  expect_vec(prop(sun, "direction").vec, {0, 1, 0}, 1e-12);
+  ASSERT_EQ(im.scene.warnings.size(), 1u);
+  EXPECT_NE(im.scene.warnings[0].find("spot: approximate"), std::string::npos);
+}
+
+TEST(GltfImport, MetallicRoughnessChannelsAreSplitAndScaled) {
+  std::filesystem::path dir = fresh_dir();
+  std::string png = (dir / "mr.png").string();
+  // 2x2: B (metallic) and G (roughness) differ per pixel; R is the occlusion channel.
+  const unsigned char pixels[] = {10, 51, 204, 20, 102, 153, 30, 153, 102, 40, 204, 51};
+  auto out = OIIO::ImageOutput::create(png);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+  json g = triangle_gltf();
+  g["images"] = {{{"uri", "mr.png"}}};
+  g["textures"] = {{{"source", 0}}};
+  g["materials"][0]["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 0}};
+  std::filesystem::create_directories(dir / "work");
+  std::string path = write_file(dir, "scene.gltf", g.dump(1));
+  GltfScene s = import_gltf(path, {}, dir / "work");
+  const Node& bsdf = one(*s.parsed.root, "bsdf", "principled");
+  Image metallic = load_image(prop(*prop(bsdf, "metallic").object, "filename").text, true);
+  Image roughness = load_image(prop(*prop(bsdf, "roughness").object, "filename").text, true);
+  ASSERT_EQ(metallic.width, 2);
+  ASSERT_EQ(metallic.height, 2);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(metallic.texels[i].x, 0.25 * pixels[3 * i + 2] / 255.0, 1e-6) << i;
+    EXPECT_NEAR(roughness.texels[i].x, 0.625 * pixels[3 * i + 1] / 255.0, 1e-6) << i;
+  }
+}
+
+TEST(GltfImport, FieldsThatDoNotMapAreWarnedOneLineEach) {
+  json g = triangle_gltf();
+  g["skins"] = {{{"joints", {0}}}};
+  g["extensionsUsed"] = {"KHR_materials_clearcoat"};
+  g["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+  g["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 1;
+  g["materials"][0]["alphaMode"] = "MASK";
+  g["materials"][0]["occlusionTexture"] = {{"index", 0}};
+  g["images"] = {{{"uri", "none.png"}}};
+  g["textures"] = {{{"source", 0}}};
+  Imported im = import(g);
+  std::vector<std::string> expected = {
+      "skins: not supported by twinray, ignored",
+      "extensionsUsed[0]: extension \"KHR_materials_clearcoat\" not supported by twinray",
+      "materials[0].extensions.KHR_materials_clearcoat: extension not supported by twinray",
+      "meshes[0].primitives[0].attributes.TEXCOORD_1: ignored: only TEXCOORD_0 is read",
+      "materials[0].alphaMode: MASK ignored: twinray renders the material opaque",
+      "materials[0].occlusionTexture: ignored"};
+  ASSERT_EQ(im.scene.warnings.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    bool found = false;
+    for (const std::string& w : im.scene.warnings) found = found || w.find(expected[i]) != w.npos;
+    EXPECT_TRUE(found) << expected[i];
+  }
+}
+
+std::string load_error(const std::string& name, const std::string& text) {
+  std::filesystem::path dir = fresh_dir();
+  std::string path = write_file(dir, name, text);
+  try {
+    load_scene(path, {});
+  } catch (const SceneError& e) {
+    std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind(path + ":", 0), 0u) << message;
+    return message.substr(path.size());
+  }
+  ADD_FAILURE() << "no SceneError for " << name;
+  return "";
+}
+
+TEST(GltfImport, MalformedFilesGiveOneLineErrors) {
+  EXPECT_EQ(load_error("cut.gltf", "{\n \"asset\": {\"version\": \"2.0\"},\n \"nodes\": [\n")
+                .rfind(":4: malformed JSON", 0),
+            0u);
+  json g = triangle_gltf();
+  g["buffers"][0]["uri"] = "missing.bin";
+  EXPECT_NE(load_error("nobuffer.gltf", g.dump(1)).find("Assimp cannot read the file"),
+            std::string::npos);
+  json v = triangle_gltf();
+  v["asset"]["version"] = "1.0";
+  EXPECT_NE(load_error("old.gltf", v.dump(1)).find("asset.version: glTF 1.0 is not glTF 2.x"),
+            std::string::npos);
+  json c = triangle_gltf();
+  c["nodes"][2].erase("camera");
+  EXPECT_NE(load_error("nocamera.gltf", c.dump(1)).find("no node of the scene has a camera"),
+            std::string::npos);
+  EXPECT_NE(load_error("bad.glb", "glTF\x02").find("truncated GLB header"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tr
