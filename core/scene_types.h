@@ -64,6 +64,7 @@ const uint MATERIAL_MASKED = 2u;          // Mitsuba `mask` wrapper, opacity in 
 const uint MATERIAL_BECKMANN = 4u;        // microfacet distribution (GGX when clear)
 const uint MATERIAL_SAMPLE_VISIBLE = 8u;  // microfacet `sample_visible`
 const uint MATERIAL_NONLINEAR = 16u;      // plastic / roughplastic `nonlinear`
+const uint MATERIAL_ALPHA_TESTED = 32u;   // twinray `alphatest` wrapper (core/alpha_test.h)
 
 // Parameter slots, per BSDF type (Material.param[i]); see core/bsdf/*.h for their meaning.
 const uint MATERIAL_PARAM_COUNT = 12u;
@@ -73,8 +74,12 @@ struct Material {
   uint flags;             // MATERIAL_*
   float eta;              // relative IOR int_ior / ext_ior (dielectrics, plastics, principled)
   float extra;            // per-type scalar (e.g. principled sampling rates), see core/bsdf/*.h
-  TexturedValue opacity;  // mask opacity (only with MATERIAL_MASKED)
+  TexturedValue opacity;  // opacity of MATERIAL_MASKED or MATERIAL_ALPHA_TESTED
   TexturedValue param[MATERIAL_PARAM_COUNT];
+  float alpha_cutoff;  // MATERIAL_ALPHA_TESTED: the surface is absent where opacity < alpha_cutoff
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // ---- Geometry --------------------------------------------------------------------------

@@ -1,10 +1,12 @@
 #include "cpu_backend/embree_scene.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "core/alpha_test.h"
 #include "core/shapes/intersect.h"
 
 namespace tr {
@@ -57,6 +59,17 @@ void occluded_callback(const RTCOccludedFunctionNArguments* args) {
   float t;
   if (intersect_shape(user->shape, o, d, ray->tnear, ray->tfar, t))
     ray->tfar = -std::numeric_limits<float>::infinity();
+}
+
+// Intersection and occlusion filter of an alpha-tested mesh (core/alpha_test.h); the geometry's
+// user pointer holds its shape index.
+void alpha_test_filter(const RTCFilterFunctionNArguments* args) {
+  const uint shape = uint(reinterpret_cast<uintptr_t>(args->geometryUserPtr));
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    vec2 b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+    if (alpha_test_cuts(shape, RTCHitN_primID(args->hit, args->N, i), b)) args->valid[i] = 0;
+  }
 }
 
 // Bounds of the canonical analytic shape mapped by the shape's to_world.
@@ -146,6 +159,11 @@ void EmbreeScene::add_shapes(RTCScene scene, uint first_shape, uint shape_count)
       rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                  buffers_.indices.data(), size_t(shape.first_index) * sizeof(uint),
                                  3 * sizeof(uint), shape.triangle_count);
+      if (buffers_.materials[shape.material].flags & MATERIAL_ALPHA_TESTED) {
+        rtcSetGeometryUserData(g, reinterpret_cast<void*>(uintptr_t(s)));
+        rtcSetGeometryIntersectFilterFunction(g, alpha_test_filter);
+        rtcSetGeometryOccludedFilterFunction(g, alpha_test_filter);
+      }
     } else {
       auto user = std::make_unique<UserShape>();
       user->shape = s;

@@ -6,6 +6,7 @@
 #include "core/bindings.h"
 #include "gpu_backend/gpu_error.h"
 #include "shaders/batch.h"
+#include "spirv/alpha.h"
 #include "spirv/hit.h"
 #include "spirv/miss.h"
 #include "spirv/shadow.h"
@@ -32,13 +33,13 @@ VkShaderModule make_module(VkDevice device, const uint32_t* code, size_t bytes) 
 }
 
 VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type, uint32_t general,
-                                           uint32_t closest, uint32_t intersection) {
+                                           uint32_t closest, uint32_t any, uint32_t intersection) {
   VkRayTracingShaderGroupCreateInfoKHR g{};
   g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
   g.type = type;
   g.generalShader = general;
   g.closestHitShader = closest;
-  g.anyHitShader = VK_SHADER_UNUSED_KHR;
+  g.anyHitShader = any;
   g.intersectionShader = intersection;
   return g;
 }
@@ -59,7 +60,8 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
       binding.descriptorType = b == BINDING_TLAS ? VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
                                                  : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       binding.stageFlags = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
-                           VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR;
+                           VK_SHADER_STAGE_ANY_HIT_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR |
+                           VK_SHADER_STAGE_MISS_BIT_KHR;
       bindings.push_back(binding);
     }
     VkDescriptorSetLayoutCreateInfo set_info{};
@@ -91,6 +93,7 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
         {VK_SHADER_STAGE_MISS_BIT_KHR, spirv_shadow, sizeof(spirv_shadow)},
         {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, spirv_hit, sizeof(spirv_hit)},
         {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, spirv_shape, sizeof(spirv_shape)},
+        {VK_SHADER_STAGE_ANY_HIT_BIT_KHR, spirv_alpha, sizeof(spirv_alpha)},
     };
     // One uint per constant_id, in SceneFeatures order.
     const uint32_t kConstants = sizeof(SceneFeatures) / sizeof(uint32_t);
@@ -111,11 +114,12 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
     }
     const uint32_t U = VK_SHADER_UNUSED_KHR;
     const VkRayTracingShaderGroupCreateInfoKHR groups[kGroupCount] = {
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, U, U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, U, U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 2, U, U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, 3, U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, 3, 4),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, U, U, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, U, U, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 2, U, U, U),
+        // Any-hit runs only on non-opaque (alpha-tested) triangle geometries.
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, 3, 5, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, 3, U, 4),
     };
     VkRayTracingPipelineCreateInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;

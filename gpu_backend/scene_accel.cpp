@@ -168,7 +168,10 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
       const Shape& shape = scene.shapes[s];
       VkAccelerationStructureGeometryKHR g{};
       g.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
-      g.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+      // Alpha-tested meshes leave the opaque bit clear so that shaders/alpha.rahit runs.
+      const bool alpha_tested =
+          (scene.materials[shape.material].flags & MATERIAL_ALPHA_TESTED) != 0;
+      g.flags = alpha_tested ? 0 : VK_GEOMETRY_OPAQUE_BIT_KHR;
       VkAccelerationStructureBuildRangeInfoKHR range{};
       if (e.procedural) {
         g.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
@@ -217,7 +220,6 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
     vi.mask = 0xff;
     vi.instanceShaderBindingTableRecordOffset =
         layout.blases[b].procedural ? HIT_GROUP_PROCEDURAL : HIT_GROUP_TRIANGLES;
-    vi.flags = VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
     vi.accelerationStructureReference = blases_[b]->address();
     instances.push_back(vi);
   }

@@ -32,6 +32,8 @@ Material empty_material(uint type) {
   m.extra = 0.0f;
   m.opacity = constant_value(glm::dvec3(1.0));
   for (uint i = 0; i < MATERIAL_PARAM_COUNT; ++i) m.param[i] = constant_value(glm::dvec3(0.0));
+  m.alpha_cutoff = 0.0f;
+  m.pad0 = m.pad1 = m.pad2 = 0u;
   return m;
 }
 
@@ -103,7 +105,7 @@ bool has_transmission(Node& bsdf) {
   if (t == "dielectric" || t == "roughdielectric" || t == "thindielectric" || t == "mask")
     return true;
   if (t == "principled") return principled_has_spec_trans(bsdf);
-  if (t == "twosided" || t == "blendbsdf" || t == "normalmap" || t == "bumpmap")
+  if (t == "twosided" || t == "blendbsdf" || t == "normalmap" || t == "bumpmap" || t == "alphatest")
     for (Property& p : bsdf.props)
       if (p.kind == PropertyKind::Object && p.object->tag == "bsdf" && has_transmission(*p.object))
         return true;
@@ -453,6 +455,26 @@ Material SceneBuilder::build_material(Node& n) {
     m = build_pplastic(n);
   } else if (type == "principled") {
     m = build_principled(n);
+  } else if (type == "alphatest") {
+    // twinray extension (core/alpha_test.h): opacity (texture or float, required) and cutoff
+    // (default 0.5, glTF 2.0's alphaCutoff) around exactly one nested BSDF.
+    std::vector<Property*> inner = take_objects(n, "bsdf");
+    if (inner.size() != 1)
+      fail(inner.size() > 1 ? inner[1]->loc : n.loc, describe(n),
+           " takes exactly one nested BSDF (it has ", inner.size(), ")");
+    if (!has_property(n, "opacity")) fail(n.loc, describe(n), " needs an 'opacity'");
+    TexturedValue opacity = textured(n, "opacity", glm::dvec3(1.0), true);
+    double cutoff = take_float(n, "cutoff", 0.5);
+    if (!(cutoff >= 0.0 && cutoff <= 1.0))
+      fail(find_property(n, "cutoff")->loc, describe(n), ": cutoff must lie in [0, 1]");
+    m = build_material(*inner[0]->object);
+    if (m.flags & (MATERIAL_ALPHA_TESTED | MATERIAL_MASKED))
+      fail(inner[0]->loc, describe(n), " around a ",
+           (m.flags & MATERIAL_MASKED) ? "mask" : "nested alphatest",
+           " is not supported (both use the opacity slot)");
+    m.flags |= MATERIAL_ALPHA_TESTED;
+    m.opacity = opacity;
+    m.alpha_cutoff = float(cutoff);
   } else if (type == "twosided" || type == "mask") {
     std::vector<Property*> inner = take_objects(n, "bsdf");
     if (inner.empty()) fail(n.loc, describe(n), " needs a nested BSDF");
@@ -483,6 +505,9 @@ Material SceneBuilder::build_material(Node& n) {
       m.flags |= MATERIAL_TWOSIDED;
     } else {
       if (m.flags & MATERIAL_MASKED) fail(n.loc, describe(n), ": nested mask BSDFs");
+      if (m.flags & MATERIAL_ALPHA_TESTED)
+        fail(n.loc, describe(n),
+             " around an alphatest is not supported (both use the opacity slot)");
       m.flags |= MATERIAL_MASKED;
       m.opacity = opacity;
     }
@@ -531,7 +556,7 @@ Material SceneBuilder::build_material(Node& n) {
   } else {
     fail(n.loc, "unknown BSDF type \"", type,
          "\" (supported: diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-         "thindielectric, plastic, roughplastic, pplastic, principled, twosided, mask, "
+         "thindielectric, plastic, roughplastic, pplastic, principled, twosided, mask, alphatest, "
          "blendbsdf, normalmap, bumpmap)");
   }
   check_consumed(n);

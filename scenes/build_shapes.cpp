@@ -213,6 +213,13 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
          "\" (supported: obj, ply, serialized, rectangle, cube, sphere, disk, cylinder, "
          "shapegroup, instance)");
   }
+  if (b_.materials[r.material].flags & MATERIAL_ALPHA_TESTED) {
+    // core/alpha_test.h: the any-hit test reads mesh uvs; an emitter's area sampling would
+    // also land on the cut-away parts.
+    if (r.type != SHAPE_MESH)
+      fail(bsdfs[0]->loc, describe(n), ": an alphatest BSDF needs a mesh, not an analytic ", type);
+    if (s.emitting) fail(s.emitter_loc, describe(n), ": an alphatest surface cannot emit");
+  }
   check_consumed(n);
   bind_mesh_attributes(n, s);
   out.push_back(std::move(s));

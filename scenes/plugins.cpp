@@ -53,6 +53,8 @@ const Entry TABLE[] = {
     {"bsdf", "principled", PluginSupport::Supported, ""},
     {"bsdf", "twosided", PluginSupport::Supported, ""},
     {"bsdf", "mask", PluginSupport::Supported, ""},
+    // twinray extension: alpha testing as real-time renderers do it (core/alpha_test.h)
+    {"bsdf", "alphatest", PluginSupport::Supported, ""},
     {"bsdf", "normalmap", PluginSupport::Supported, ""},
     {"bsdf", "bumpmap", PluginSupport::Supported, ""},
     {"bsdf", "blendbsdf", PluginSupport::Supported, ""},

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "../cpu/alpha_test_check.h"
 #include "../cpu/ambient_occlusion_check.h"
 #include "../cpu/constant_image_check.h"
 #include "cpu_backend/render_cpu.h"
@@ -98,6 +99,31 @@ TEST(GpuLockstep, PathLengthWindow) {
 
 TEST(GpuLockstep, AmbientOcclusionPlanes) {
   expect_lockstep(cpu_test_scene("ambient_occlusion_planes.xml"), 16, 1);
+}
+
+// twinray's alphatest through the any-hit shader (shaders/alpha.rahit), as
+// tests/cpu/alpha_test_test.cpp on the CPU: camera and shadow rays, then shadow rays alone
+// through a cutoff (each render is exact, so this is stronger than a lockstep check; two
+// cases only, as each scene compiles its own pipeline on lavapipe).
+TEST(GpuScenes, AlphaTestCutsCameraAndShadowRays) {
+  struct Case {
+    const char* camera_y;
+    const char* c0;
+    const char* c1;
+    const char* cutoff;
+    test::AlphaPattern pattern;
+  };
+  for (Case c : {Case{"5", "0", "1", "0.5", test::AlphaPattern::Checkerboard},
+                 Case{"0.5", "0.3", "0.7", "0.5", test::AlphaPattern::Checkerboard}}) {
+    LoadOptions load;
+    load.defines = {{"camera_y", c.camera_y}, {"c0", c.c0}, {"c1", c.c1}, {"cutoff", c.cutoff}};
+    Scene scene = load_scene(cpu_test_scene("alpha_test_plate.xml"), load);
+    RenderOptions options;
+    options.seed = 7;
+    test::expect_alpha_test_image(render_gpu(scene, options), c.pattern,
+                                  std::string("gpu camera_y ") + c.camera_y + " opacities " + c.c0 +
+                                      "/" + c.c1 + " cutoff " + c.cutoff);
+  }
 }
 
 // pbrt-v4's ambientocclusion against its closed form between two planes, as

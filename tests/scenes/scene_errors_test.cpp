@@ -226,6 +226,31 @@ TEST(SceneErrors, StructuralRules) {
 
 // Never crash on bad input: every truncation and many single-character corruptions of a scene
 // that uses most features either load or fail with a SceneError.
+TEST(SceneErrors, AlphaTestRules) {
+  const std::string quad = "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/>\n";
+  expect_error(quad + "<bsdf type=\"alphatest\"><bsdf type=\"diffuse\"/></bsdf></shape>",
+               "alphatest", "needs an 'opacity'");
+  expect_error(quad +
+                   "<bsdf type=\"alphatest\"><float name=\"opacity\" value=\"1\"/>\n"
+                   "<float name=\"cutoff\" value=\"1.5\"/><bsdf type=\"diffuse\"/></bsdf></shape>",
+               "cutoff", "cutoff must lie in [0, 1]");
+  expect_error(
+      quad + "<bsdf type=\"alphatest\"><float name=\"opacity\" value=\"1\"/></bsdf></shape>",
+      "alphatest", "exactly one nested BSDF");
+  expect_error(
+      "<shape type=\"sphere\">\n<bsdf type=\"alphatest\"><float name=\"opacity\" "
+      "value=\"1\"/><bsdf type=\"diffuse\"/></bsdf></shape>",
+      "alphatest", "needs a mesh");
+  expect_error(quad +
+                   "<bsdf type=\"alphatest\"><float name=\"opacity\" value=\"1\"/><bsdf "
+                   "type=\"diffuse\"/></bsdf>\n<emitter type=\"area\"/></shape>",
+               "emitter", "cannot emit");
+  expect_error(quad +
+                   "<bsdf type=\"alphatest\"><float name=\"opacity\" value=\"1\"/>\n<bsdf "
+                   "type=\"mask\"><bsdf type=\"diffuse\"/></bsdf></bsdf></shape>",
+               "type=\"mask", "around a mask is not supported");
+}
+
 TEST(SceneErrors, CorruptedScenesFailCleanly) {
   std::filesystem::path dir = fresh_dir();
   write_file(dir, "quad.obj", QUAD_OBJ);
