@@ -1,7 +1,7 @@
 // `twinray render SCENE --aov albedo,sh_normal,depth` end to end: the binary writes one EXR
 // whose channels are R, G, B and the guides' (named as the aov integrator names them), the
 // guide values in the file match the closed form of tests/cpu/scenes/guide_sphere.xml
-// (tests/cpu/guide_aovs_check.h; the CPU backend: tests/gpu/guide_aovs_test.cpp checks the
+// (guide_aovs_check.h; the CPU backend: tests/gpu/guide_aovs_test.cpp checks the
 // GPU's guides, the file writing is shared), and bad --aov requests exit with the
 // documented status (app/exit_codes.h), a one-line message first on stderr and no output file.
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@
 namespace tr {
 namespace {
 
-const std::string kScene = std::string(TWINRAY_CPU_TEST_SCENES) + "/guide_sphere.xml";
+const std::string kScene = std::string(TWINRAY_TEST_SCENES) + "/guide_sphere.xml";
 
 struct Run {
   int status = -1;
@@ -100,7 +100,7 @@ TEST(GuideAovsCli, UnknownTypeIsAUsageError) {
 }
 
 TEST(GuideAovsCli, AovSceneIsRefused) {
-  const std::string scene = std::string(TWINRAY_CPU_TEST_SCENES) + "/aov_sphere.xml";
+  const std::string scene = std::string(TWINRAY_TEST_SCENES) + "/aov_sphere.xml";
   expect_refused(scene + " --aov albedo", 3,
                  "twinray: " + scene +
                      ":4: --aov: the scene's integrator is already <integrator type=\"aov\">; "
