@@ -36,10 +36,10 @@ const std::set<std::string> kSupportedExtensions = {
     "KHR_lights_punctual", "KHR_materials_transmission", "KHR_materials_ior",
     "KHR_materials_emissive_strength"};
 
-// glTF 2.0 section 3.6.2.4 (accessor data types) / 5.24.3: primitive modes.
+// glTF 2.0 spec, mesh.primitive.mode: the topology of a primitive.
 const int kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
 
-// What a baked texture holds (glTF 2.0 section 3.9: the channels each material map uses).
+// What a baked texture holds (glTF 2.0 spec, "Materials": the channels each material map uses).
 enum class Bake { Color, Red, Green, Blue, Normal };
 
 class Importer {
@@ -130,7 +130,7 @@ class Importer {
   }
 
   // Warns about each field of `o` not in `names` (`extensions` and `extras` are handled apart:
-  // extras carry application data with no rendering meaning, section 3.12).
+  // extras carry application data with no rendering meaning, spec "Extras").
   void known(const json& o, const std::string& pointer, std::set<std::string> names) {
     names.insert("extras");
     names.insert("name");
@@ -206,7 +206,7 @@ class Importer {
     return v ? array(*v, std::string("/") + key) : empty;
   }
 
-  // --- the container (section 4: GLB file format) and the asset ---
+  // --- the container (spec "GLB File Format") and the asset ---
 
   static uint32_t u32(const std::string& s, size_t at) {
     uint32_t v = 0;
@@ -220,8 +220,8 @@ class Importer {
     buffer << in.rdbuf();
     std::string s = buffer.str();
     if (s.size() < 4 || s.compare(0, 4, "glTF") != 0) return s;
-    // Section 4.4: a 12-byte header (magic, version 2, length), then chunks of (length, type,
-    // data): the first JSON (0x4E4F534A), then an optional BIN (0x004E4942).
+    // Spec "GLB File Format": a 12-byte header (magic, version 2, length), then chunks of (length,
+    // type, data): the first JSON (0x4E4F534A), then an optional BIN (0x004E4942).
     Location top{path_, 0};
     if (s.size() < 20) fail(top, "truncated GLB header");
     if (u32(s, 4) != 2) fail(top, "GLB container version ", u32(s, 4), " (glTF 2.0 is version 2)");
@@ -242,7 +242,7 @@ class Importer {
 
   void check_asset() {
     const json* asset = member(doc_, "asset");
-    if (!asset) bad("", "\"asset\" is required (glTF 2.0 section 5.2)");
+    if (!asset) bad("", "\"asset\" is required (glTF 2.0 spec, Asset)");
     object(*asset, "/asset");
     const json* version = member(*asset, "version");
     if (!version) bad("/asset", "\"version\" is required");
@@ -251,7 +251,8 @@ class Importer {
     for (const json& e : list("extensionsRequired"))
       if (!e.is_string() || !kSupportedExtensions.count(e.get<std::string>()))
         bad("/extensionsRequired", "required extension ", e.dump(),
-            " is not supported by twinray (section 3.12: a loader must then refuse the asset)");
+            " is not supported by twinray (spec, Specifying Extensions: a loader must then refuse "
+            "the asset)");
   }
 
   void read_parameters() {
@@ -293,7 +294,7 @@ class Importer {
       if (!used[i].is_string() || !kSupportedExtensions.count(used[i].get<std::string>()))
         warn("/extensionsUsed/" + std::to_string(i), "extension ", used[i].dump(),
              " not supported by twinray, its fields are ignored");
-    // Section 5.26 (sampler): twinray's bitmaps filter bilinearly and wrap by repeating, the
+    // Spec "Samplers": twinray's bitmaps filter bilinearly and wrap by repeating, the
     // glTF defaults (linear filtering is the usual choice when undefined; wrap 10497 REPEAT).
     const json& samplers = list("samplers");
     for (size_t i = 0; i < samplers.size(); ++i) {
@@ -355,7 +356,7 @@ class Importer {
       put(m.mVertices[k].x), put(m.mVertices[k].y), put(m.mVertices[k].z);
       if (normals) put(m.mNormals[k].x), put(m.mNormals[k].y), put(m.mNormals[k].z);
       // Assimp stores glTF's v as 1 - v (glTF2Importer flips it to its bottom-left origin);
-      // undone here: glTF's uv origin is the image's top-left (section 3.8.4.2), as Mitsuba's.
+      // undone here: glTF's uv origin is the image's top-left (spec "Images"), as Mitsuba's.
       if (uv) put(m.mTextureCoords[0][k].x), put(1.0f - m.mTextureCoords[0][k].y);
     }
     for (unsigned k = 0; k < m.mNumFaces; ++k) {
@@ -396,14 +397,14 @@ class Importer {
     add(n, "to_world", PropertyKind::Transform, pointer).matrix = m;
   }
 
-  // --- scene graph (section 3.5: nodes and hierarchy) ---
+  // --- scene graph (spec "Nodes and Hierarchy") ---
 
-  // Section 3.5.2: `matrix` (column-major), or T * R * S from translation, rotation (unit
+  // Spec "Transformations": `matrix` (column-major), or T * R * S from translation, rotation (unit
   // quaternion x, y, z, w) and scale.
   glm::dmat4 local_transform(const json& n, const std::string& p) {
     if (const json* m = member(n, "matrix")) {
       if (member(n, "translation") || member(n, "rotation") || member(n, "scale"))
-        bad(p, "\"matrix\" and TRS properties together (section 5.25 forbids it)");
+        bad(p, "\"matrix\" and TRS properties together (the spec's node schema forbids it)");
       std::vector<double> v = numbers(*m, p + "/matrix", 16);
       return glm::make_mat4(v.data());
     }
@@ -449,7 +450,7 @@ class Importer {
   void visit(size_t i, const glm::dmat4& parent, int depth) {
     std::string p = "/nodes/" + std::to_string(i);
     const json& nodes = list("nodes");
-    // Section 3.5.1: the node hierarchy is a set of disjoint strict trees.
+    // Spec "Nodes and Hierarchy": the node hierarchy is a set of disjoint strict trees.
     if (depth > int(nodes.size())) bad(p, "the node hierarchy has a cycle");
     const json& n = object(nodes[i], p);
     known(
@@ -525,7 +526,7 @@ class Importer {
       }
       NodePtr s = make("shape", "ply", pp);
       add(*s, "filename", PropertyKind::String, pp).text = ply_file(ai);
-      // Section 3.7.2.1: without NORMAL, flat normals.
+      // Spec "Meshes": without NORMAL, flat normals.
       if (!am.HasNormals()) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
       add_transform(*s, world, node_pointer);
       long long material = -1;
@@ -536,7 +537,7 @@ class Importer {
     }
   }
 
-  // --- materials (section 3.9) ---
+  // --- materials (spec "Materials") ---
 
   struct MaterialNodes {
     NodePtr bsdf;
@@ -556,7 +557,7 @@ class Importer {
     }
   }
 
-  // The bitmap of texture reference `info` (a textureInfo, section 5.28) baked as `what`, with
+  // The bitmap of texture reference `info` (a textureInfo) baked as `what`, with
   // `factor` multiplied in (Normal: the normal texture's scale on x and y).
   NodePtr map(const json& info, const std::string& p, Bake what, glm::dvec3 factor) {
     object(info, p);
@@ -617,7 +618,7 @@ class Importer {
     return out;
   }
 
-  // The bytes a URI names (section 3.6.1.3 / 5.3: a data URI or a path relative to the file).
+  // The bytes a URI names (spec "URIs": a data URI or a path relative to the file).
   std::string uri_bytes(const std::string& uri, const std::string& p) const {
     if (uri.rfind("data:", 0) == 0) {
       size_t comma = uri.find(',');
@@ -665,7 +666,7 @@ class Importer {
     if (const json* u = member(buffer, "uri"))
       data = uri_bytes(text(*u, bp + "/uri"), bp + "/uri");
     else if (bi == 0 && have_glb_bin_)
-      data = glb_bin_;  // section 4.4.3.3: the GLB-stored buffer
+      data = glb_bin_;  // spec "GLB-stored Buffer"
     else
       bad(bp, "no \"uri\" and no GLB BIN chunk");
     if (offset < 0 || length < 0 || size_t(offset + length) > data.size())
@@ -675,8 +676,8 @@ class Importer {
     return data.substr(size_t(offset), size_t(length));
   }
 
-  // Image `i` decoded to linear RGBA (sRGB-decoded when `srgb`: section 3.9.2, baseColor and
-  // emissive textures are sRGB-encoded, the others linear).
+  // Image `i` decoded to linear RGBA (sRGB-decoded when `srgb`: spec "Metallic-Roughness Material",
+  // baseColor and emissive textures are sRGB-encoded, the others linear).
   const Image& image(size_t i, bool srgb, const std::string& p) {
     auto key = std::make_pair(i, srgb);
     auto it = images_.find(key);
@@ -719,9 +720,9 @@ class Importer {
             f.write(reinterpret_cast<const char*>(&v), 4);
           }
         } else if (what == Bake::Normal) {
-          // Section 3.9.3: n = normalize((2 c - 1) * (scale, scale, 1)); stored back as (n+1)/2
-          // before normalising, which Mitsuba's normalmap does after 2 c - 1 (a linear map, so
-          // it commutes with bilinear filtering).
+          // Spec "Additional Textures": n = normalize((2 c - 1) * (scale, scale, 1)); stored back
+          // as (n+1)/2 before normalising, which Mitsuba's normalmap does after 2 c - 1 (a linear
+          // map, so it commutes with bilinear filtering).
           for (int k = 0; k < 3; ++k) {
             float v = float(((2.0 * c[k] - 1.0) * factor[k] + 1.0) * 0.5);
             f.write(reinterpret_cast<const char*>(&v), 4);
@@ -748,7 +749,7 @@ class Importer {
   MaterialNodes material_nodes(long long index) {
     MaterialNodes out;
     json none = json::object();
-    // Section 3.9.6: a primitive without material uses the default material (the
+    // Spec "Default Material": a primitive without material uses the default material (the
     // metallic-roughness defaults: base colour 1, metallic 1, roughness 1).
     std::string p = index < 0 ? std::string("/meshes") : "/materials/" + std::to_string(index);
     const json& m = index < 0 ? none : object(list("materials")[size_t(index)], p);
@@ -939,14 +940,14 @@ class Importer {
     add_object(*root_, e, p);
   }
 
-  // --- camera (section 3.10) and integrator ---
+  // --- camera (spec "Cameras") and integrator ---
 
   void add_sensor() {
     const json& cameras = list("cameras");
     if (camera_nodes_.empty())
       bad("",
           "no node of the scene has a camera: twinray renders through the file's first "
-          "camera node (glTF 2.0 section 3.10)");
+          "camera node (glTF 2.0 spec, Cameras)");
     size_t node = camera_nodes_.front();
     for (size_t k = 1; k < camera_nodes_.size(); ++k)
       warn("/nodes/" + std::to_string(camera_nodes_[k]) + "/camera",
@@ -982,7 +983,7 @@ class Importer {
       if (!(far > near)) bad(pp + "/zfar", "must exceed znear");
       add_float(*sensor, "far_clip", far, pp + "/zfar");
     } else {
-      // Section 3.10.3: no zfar is an infinite projection.
+      // Spec "Projection Matrices": no zfar is an infinite projection.
       add_float(*sensor, "far_clip", 1e30, pp);
     }
     // glTF cameras look along -z with +y up and +x right; Mitsuba's along +z with +x left.

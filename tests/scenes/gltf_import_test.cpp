@@ -133,14 +133,14 @@ TEST(GltfImport, TransformsMaterialCameraAndIntegrator) {
   Imported im = import(triangle_gltf());
   const Node& root = *im.scene.parsed.root;
   const Node& shape = one(root, "shape", "ply");
-  // Section 3.5.2: world = parent T * (child T R S).
+  // Spec "Transformations": world = parent T * (child T R S).
   glm::dmat4 expected = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3)) *
                         glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(0, 0, 1)) *
                         glm::scale(glm::dmat4(1.0), glm::dvec3(2.0));
   const glm::dmat4& m = prop(shape, "to_world").matrix;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) EXPECT_NEAR(m[c][r], expected[c][r], 1e-12) << c << r;
-  EXPECT_TRUE(prop(shape, "face_normals").boolean);  // no NORMAL: flat (section 3.7.2.1)
+  EXPECT_TRUE(prop(shape, "face_normals").boolean);  // no NORMAL: flat (spec "Meshes")
 
   // The PLY keeps glTF's uv (Assimp's flip of v undone): vertex 1 has uv (1, 0).
   std::ifstream ply(prop(shape, "filename").text, std::ios::binary);

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Writes the glTF 2.0 example scene of this folder: scene.gltf, scene.bin and its PNG textures.
 
-A ground plane and a UV sphere, both with a bumpy tangent-space normal map (glTF 2.0 section
-3.9.3: OpenGL convention, +Y toward the image's top), a base-colour texture and a
-metallic-roughness texture (B = metallic, G = roughness, section 3.9.2); an emissive quad
-above them, a point light (KHR_lights_punctual) and a perspective camera. Standard library only
+A ground plane and a UV sphere, both with a bumpy tangent-space normal map (glTF 2.0 spec,
+"Additional Textures": OpenGL convention, +Y toward the image's top), a base-colour texture and
+a metallic-roughness texture (B = metallic, G = roughness; spec "Metallic-Roughness Material");
+an emissive quad above them, a point light (KHR_lights_punctual) and a perspective camera. Standard library only
 (struct, zlib for the PNGs), deterministic output.
 
     python3 make_scene.py [OUT_DIR]   (default: this script's folder)
@@ -55,7 +55,7 @@ def textures(out):
             nrow.append(tuple(byte(0.5 * c / length + 0.5) for c in n))
             checker = (i // 8 + j // 8) % 2
             crow.append((230, 160, 60) if checker else (60, 120, 200))
-            # R unused (occlusion), G = roughness, B = metallic (section 3.9.2)
+            # R unused (occlusion), G = roughness, B = metallic (spec "Metallic-Roughness Material")
             mrow.append((255, byte(0.2 + 0.6 * (j / (TEX - 1))), 255 if checker else 0))
         normal.append(nrow)
         color.append(crow)
