@@ -98,6 +98,12 @@ void wrap_in_guide_aovs(Node& root, const std::vector<GuideAov>& aovs) {
       fail(inner->loc,
            "--aov: the scene's integrator is already <integrator type=\"aov\">; put the guide "
            "AOVs into its aovs list or drop --aov");
+    // build_sensor.cpp nests neither aov nor moment in aov (Mitsuba's aov would write the
+    // moment's channels as further AOVs, which twinray's film does not hold).
+    if (inner->type == "moment")
+      fail(inner->loc,
+           "--aov: the scene's integrator is <integrator type=\"moment\">, which twinray cannot "
+           "nest in aov; use the integrator it wraps (OUT_var.exr holds the variance anyway)");
   }
   std::string list;
   for (const GuideAov& a : aovs) list += (list.empty() ? "" : ",") + a.name + ":" + a.type;

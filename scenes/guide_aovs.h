@@ -31,8 +31,8 @@ std::vector<GuideAov> parse_guide_aovs(const std::string& list);
 // Wraps the top-level integrator of `root` (a parsed scene) in an `aov` integrator with
 // `aovs`, which must be valid for parse_guide_aovs (std::invalid_argument otherwise). A scene
 // whose integrator is already `aov` is refused (SceneError at that integrator: its AOVs and
-// --aov's would have to be merged, and twinray nests no aov in aov); one without an integrator
-// gets Mitsuba's default `path` nested.
+// --aov's would have to be merged, and twinray nests no aov in aov), as is a `moment` one
+// (twinray nests no moment in aov); one without an integrator gets Mitsuba's default `path`.
 void wrap_in_guide_aovs(Node& root, const std::vector<GuideAov>& aovs);
 
 }  // namespace tr

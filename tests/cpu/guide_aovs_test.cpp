@@ -170,5 +170,23 @@ TEST(GuideAovsCpu, RefusesASceneThatIsAlreadyAov) {
   }
 }
 
+TEST(GuideAovsCpu, RefusesAMomentScene) {
+  const std::string path = write_file(
+      "twinray_guide_moment.xml",
+      "<scene version=\"3.0.0\">\n<integrator type=\"moment\"><integrator type=\"path\"/>"
+      "</integrator><sensor type=\"perspective\"/><shape type=\"sphere\"/></scene>");
+  try {
+    load_scene(path, with_guides("depth"));
+    ADD_FAILURE() << "a moment scene accepted --aov";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path +
+                  ":2: --aov: the scene's integrator is <integrator type=\"moment\">, which "
+                  "twinray cannot nest in aov; use the integrator it wraps (OUT_var.exr holds "
+                  "the variance anyway)");
+  }
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace tr
