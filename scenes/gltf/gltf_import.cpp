@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "scenes/bitmap.h"
 #include "scenes/scn/json_lines.h"
@@ -702,11 +703,10 @@ class Importer {
   // Writes image `i` as a PFM (Netpbm portable float map: "PF" colour / "Pf" grey, little-endian
   // when the scale is negative, rows bottom to top) holding `what` times `factor`, linear.
   std::string baked(size_t i, Bake what, glm::dvec3 factor, const std::string& p) {
-    std::ostringstream name;
-    name << "gltf_tex_" << i << "_" << int(what) << "_" << factor.x << "_" << factor.y << "_"
-         << factor.z << ".pfm";
-    fs::path file = work_ / name.str();
-    if (fs::exists(file)) return file.string();
+    auto key = std::make_tuple(i, int(what), factor.x, factor.y, factor.z);
+    auto done = baked_.find(key);
+    if (done != baked_.end()) return done->second;
+    fs::path file = work_ / ("gltf_texture_" + std::to_string(baked_.size()) + ".pfm");
     const Image& img = image(i, what == Bake::Color, p);
     bool color = what == Bake::Color || what == Bake::Normal;
     std::ofstream f(file, std::ios::binary);
@@ -735,7 +735,7 @@ class Importer {
       }
     }
     if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
-    return file.string();
+    return baked_[key] = file.string();
   }
 
   glm::dvec3 rgb(const json& o, const char* key, glm::dvec3 fallback, const std::string& p,
@@ -1037,6 +1037,7 @@ class Importer {
   std::vector<unsigned> mesh_offsets_;
   std::map<unsigned, std::string> plys_;
   std::map<std::pair<size_t, bool>, Image> images_;
+  std::map<std::tuple<size_t, int, double, double, double>, std::string> baked_;
   std::map<long long, MaterialNodes> materials_;
   std::set<size_t> reported_textures_;
   std::vector<json> lights_;
