@@ -2,6 +2,7 @@
 // wrapped sphere scene's albedo, shading normal and depth against the closed form, the colour
 // left as the scene's own integrator renders it, every scene format, and the refusals.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -77,8 +78,10 @@ TEST(GuideAovsCpu, EveryListedTypeLoads) {
   EXPECT_EQ(scene.aov_channels[7], (std::vector<std::string>{"shape_index.I"}));
 }
 
+// A file in the temporary directory, named per process (several builds may test at once).
 std::string write_file(const std::string& name, const std::string& text) {
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / (std::to_string(getpid()) + "_" + name)).string();
   std::ofstream(path) << text;
   return path;
 }
