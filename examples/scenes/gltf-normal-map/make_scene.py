@@ -4,8 +4,8 @@
 A ground plane and a UV sphere, both with a bumpy tangent-space normal map (glTF 2.0 spec,
 "Additional Textures": OpenGL convention, +Y toward the image's top), a base-colour texture and
 a metallic-roughness texture (B = metallic, G = roughness; spec "Metallic-Roughness Material");
-an emissive quad above them, a point light (KHR_lights_punctual) and a perspective camera. Standard library only
-(struct, zlib for the PNGs), deterministic output.
+an emissive quad above them, a point light (KHR_lights_punctual) and a perspective camera.
+Standard library only (struct, zlib for the PNGs), deterministic output.
 
     python3 make_scene.py [OUT_DIR]   (default: this script's folder)
 """
