@@ -218,8 +218,9 @@ INLINE BsdfSample bsdf_leaf_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // reflectance parameter where a BSDF has one (diffuse.cpp, plastic.cpp, roughplastic.cpp;
 // principled.cpp: base_color), otherwise pi f(wi, n) cos = pi * eval at wo = the normal
 // (src/render/bsdf.cpp). `twosided` mirrors wi to the front (twosided.cpp); `mask` returns the
-// nested BSDF's (mask.cpp), without its opacity.
-INLINE vec3 bsdf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
+// nested BSDF's (mask.cpp), without its opacity. The wrappers above a leaf:
+// bsdf_diffuse_reflectance.
+INLINE vec3 bsdf_leaf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
     wi.z = abs(wi.z);
   switch (m.type) {
@@ -350,6 +351,18 @@ INLINE BsdfSample bsdf_surface_sample(BsdfSurface g, Material m, TexCoord uv, ve
     if (twosided) s.wo.z = mulsign(s.wo.z, wi_z);
   }
   return s;
+}
+
+// Mitsuba's eval_diffuse_reflectance through the wrappers: normalmap.cpp and bumpmap.cpp return
+// the nested BSDF's at the unperturbed interaction, blendbsdf.cpp the weighted mix of its
+// children's (core/bsdf/blend.h).
+INLINE vec3 bsdf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
+  if (bsdf_is_perturbed(m)) {
+    if ((m.flags & MATERIAL_TWOSIDED) != 0u) wi.z = abs(wi.z);
+    m = scene_material(normalmap_child(m));
+  }
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_diffuse_reflectance(m, uv, wi);
+  return bsdf_leaf_diffuse_reflectance(m, uv, wi);
 }
 
 INLINE vec3 bsdf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {

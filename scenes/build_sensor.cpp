@@ -400,7 +400,6 @@ void SceneBuilder::add_integrator(Node& n) {
       fail(nested[1]->loc, describe(n),
            ": twinray renders one nested integrator (Mitsuba writes each into its own channels)");
     aovs = parse_aovs(n, nested.empty() ? "" : nested[0]->name);
-    aov_loc_ = n.loc;
     // Read by Mitsuba's Integrator base; the AOVs do not depend on it.
     take_bool(n, "hide_emitters", false);
     take_sampling_integrator_base(n);
@@ -493,20 +492,6 @@ void SceneBuilder::add_integrator(Node& n) {
   check_consumed(m);
   scene_.integrator_name =
       n.type == "moment" || n.type == "aov" ? n.type + "(" + m.type + ")" : m.type;
-}
-
-// core/bsdf.h's bsdf_diffuse_reflectance (the albedo AOV) knows no blendbsdf or normalmap yet
-// (Mitsuba: the weighted mix of the children's, the nested BSDF's): refused rather than wrong.
-void SceneBuilder::check_aov_albedo() const {
-  const Integrator& it = b_.globals.integrator;
-  bool albedo = false;
-  for (uint i = 0; i < it.aov_count; ++i) albedo |= it.aov_types[i / 4][i % 4] == AOV_ALBEDO;
-  if (!albedo) return;
-  for (const Material& m : b_.materials)
-    if (m.type == BSDF_BLEND || m.type == BSDF_NORMALMAP || m.type == BSDF_BUMPMAP)
-      fail(aov_loc_,
-           "<integrator type=\"aov\">: the albedo AOV of a blendbsdf, normalmap or bumpmap "
-           "material is not implemented in twinray yet");
 }
 
 }  // namespace tr

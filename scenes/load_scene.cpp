@@ -101,7 +101,6 @@ Scene SceneBuilder::build() {
   number_shapes_as_mitsuba();
   finalize_shapes();
   finalize_emitters();
-  check_aov_albedo();
   b_.globals.instance_count = uint(b_.instances.size());
   return std::move(scene_);
 }

@@ -130,9 +130,6 @@ class SceneBuilder {
   // ---- sensor, film, sampler, integrator (build_sensor.cpp)
   void add_sensor(Node& sensor);
   void add_integrator(Node& integrator);
-  // Where the `aov` integrator was declared, for errors found once the materials are built.
-  Location aov_loc_;
-  void check_aov_albedo() const;
 };
 
 // Row-major 3x4 rows (core/scene_types.h) of an affine transform.

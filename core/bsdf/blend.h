@@ -105,6 +105,18 @@ INLINE uint blend_flags(Material m, TexCoord uv) {
   return flags;
 }
 
+// blendbsdf.cpp's eval_diffuse_reflectance: (1 - w) first + w second, recursively.
+INLINE vec3 blend_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
+  BlendStack st = blend_walk(m, uv);
+  Material leaf;
+  float weight;
+  uint path;
+  vec3 value = vec3(0.0f);
+  while (blend_next_leaf(st, uv, leaf, weight, path))
+    if (weight > 0.0f) value += weight * bsdf_leaf_diffuse_reflectance(leaf, uv, wi);
+  return value;
+}
+
 INLINE vec3 blend_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
