@@ -41,7 +41,7 @@ const std::set<std::string> kSupportedExtensions = {
 const int kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
 
 // What a baked texture holds (glTF 2.0 spec, "Materials": the channels each material map uses).
-enum class Bake { Color, Red, Green, Blue, Normal };
+enum class Bake { Color, Red, Green, Blue, Alpha, Normal };
 
 class Importer {
  public:
@@ -728,7 +728,7 @@ class Importer {
             f.write(reinterpret_cast<const char*>(&v), 4);
           }
         } else {
-          int k = what == Bake::Red ? 0 : what == Bake::Green ? 1 : 2;
+          int k = what == Bake::Red ? 0 : what == Bake::Green ? 1 : what == Bake::Blue ? 2 : 3;
           float v = float(c[k] * factor.x);
           f.write(reinterpret_cast<const char*>(&v), 4);
         }
@@ -767,13 +767,27 @@ class Importer {
             {"baseColorFactor", "baseColorTexture", "metallicFactor", "roughnessFactor",
              "metallicRoughnessTexture"});
     glm::dvec3 base = rgb(r, "baseColorFactor", glm::dvec3(1.0), pp, 4);
+    double base_alpha = 1.0;
+    if (const json* f = member(r, "baseColorFactor"))
+      base_alpha = numbers(*f, pp + "/baseColorFactor", 4)[3];
     std::string alpha_mode = "OPAQUE";
     if (const json* a = member(m, "alphaMode")) alpha_mode = text(*a, p + "/alphaMode");
-    if (const json* f = member(r, "baseColorFactor"); f && (*f)[3] != 1.0 && alpha_mode != "OPAQUE")
-      warn(pp + "/baseColorFactor", "alpha ignored: twinray renders the material opaque");
-    if (alpha_mode != "OPAQUE")
-      warn(p + "/alphaMode", alpha_mode, " ignored: twinray renders the material opaque");
-    if (member(m, "alphaCutoff")) warn(p + "/alphaCutoff", "ignored (the material is opaque)");
+    if (alpha_mode != "OPAQUE" && alpha_mode != "MASK" && alpha_mode != "BLEND")
+      bad(p + "/alphaMode", "expected OPAQUE, MASK or BLEND");
+    const bool mask = alpha_mode == "MASK";
+    if (alpha_mode == "BLEND") {
+      if (base_alpha != 1.0)
+        warn(pp + "/baseColorFactor", "alpha ignored: twinray renders a BLEND material opaque");
+      warn(p + "/alphaMode", "BLEND ignored: twinray renders the material opaque");
+    }
+    // Spec "Alpha Coverage": alphaCutoff applies in MASK mode only (default 0.5).
+    double cutoff = 0.5;
+    if (member(m, "alphaCutoff")) {
+      if (mask)
+        cutoff = number_or(m, "alphaCutoff", 0.5, p);
+      else
+        warn(p + "/alphaCutoff", "ignored: the material's alphaMode is not MASK");
+    }
     double metallic = number_or(r, "metallicFactor", 1.0, pp);
     double roughness = number_or(r, "roughnessFactor", 1.0, pp);
     if (const json* t = member(r, "baseColorTexture"))
@@ -847,6 +861,20 @@ class Importer {
     } else if (double_sided) {
       warn(p + "/doubleSided",
            "ignored for a transmissive material (Mitsuba's twosided refuses transmission)");
+    }
+    if (mask && !(cutoff >= 0.0 && cutoff <= 1.0)) bad(p + "/alphaCutoff", "must lie in [0, 1]");
+    if (mask) {
+      // Spec "Alpha Coverage": alpha = baseColorFactor.a x baseColorTexture.a against alphaCutoff,
+      // twinray's alphatest (core/alpha_test.h): absent for every ray where alpha < cutoff.
+      NodePtr outer = make("bsdf", "alphatest", p + "/alphaMode");
+      if (const json* t = member(r, "baseColorTexture"))
+        add(*outer, "opacity", PropertyKind::Object, pp + "/baseColorTexture").object =
+            map(*t, pp + "/baseColorTexture", Bake::Alpha, glm::dvec3(base_alpha));
+      else
+        add_float(*outer, "opacity", base_alpha, pp);
+      add_float(*outer, "cutoff", cutoff, p);
+      add_object(*outer, bsdf, p + "/alphaMode");
+      bsdf = outer;
     }
     glm::dvec3 emission = rgb(m, "emissiveFactor", glm::dvec3(0.0), p) * strength;
     if (const json* t = member(m, "emissiveTexture")) {

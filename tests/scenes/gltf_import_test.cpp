@@ -248,13 +248,49 @@ TEST(GltfImport, MetallicRoughnessChannelsAreSplitAndScaled) {
   }
 }
 
+// Spec "Alpha Coverage": MASK -> twinray's alphatest, opacity = baseColorFactor.a x the base
+// colour texture's alpha, cutoff = alphaCutoff.
+TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
+  std::filesystem::path dir = fresh_dir();
+  std::string png = (dir / "base.png").string();
+  const unsigned char pixels[] = {255, 0, 0, 0, 0, 255, 0, 64, 0, 0, 255, 128, 9, 9, 9, 255};
+  auto out = OIIO::ImageOutput::create(png);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 4, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+  json g = triangle_gltf();
+  g["materials"][0].erase("emissiveFactor");
+  g["images"] = {{{"uri", "base.png"}}};
+  g["textures"] = {{{"source", 0}}};
+  g["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1.0, 1.0, 1.0, 0.5};
+  g["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  g["materials"][0]["alphaMode"] = "MASK";
+  g["materials"][0]["alphaCutoff"] = 0.3;
+  std::filesystem::create_directories(dir / "work");
+  std::string path = write_file(dir, "scene.gltf", g.dump(1));
+  GltfScene s = import_gltf(path, {}, dir / "work");
+  EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+  const Node& alpha = one(*s.parsed.root, "bsdf", "alphatest");
+  EXPECT_DOUBLE_EQ(prop(alpha, "cutoff").number, 0.3);
+  Image opacity = load_image(prop(*prop(alpha, "opacity").object, "filename").text, true);
+  ASSERT_EQ(opacity.width, 2);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(opacity.texels[i].x, 0.5 * pixels[4 * i + 3] / 255.0, 1e-6) << i;
+  Scene scene = load_scene(path, {});
+  ASSERT_EQ(scene.buffers.materials.size(), 1u);
+  EXPECT_NE(scene.buffers.materials[0].flags & MATERIAL_ALPHA_TESTED, 0u);
+  EXPECT_FLOAT_EQ(scene.buffers.materials[0].alpha_cutoff, 0.3f);
+}
+
 TEST(GltfImport, FieldsThatDoNotMapAreWarnedOneLineEach) {
   json g = triangle_gltf();
   g["skins"] = {{{"joints", {0}}}};
   g["extensionsUsed"] = {"KHR_materials_clearcoat"};
   g["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
   g["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 1;
-  g["materials"][0]["alphaMode"] = "MASK";
+  g["materials"][0]["alphaMode"] = "BLEND";
+  g["materials"][0]["alphaCutoff"] = 0.25;
   g["materials"][0]["occlusionTexture"] = {{"index", 0}};
   g["images"] = {{{"uri", "none.png"}}};
   g["textures"] = {{{"source", 0}}};
@@ -264,7 +300,8 @@ TEST(GltfImport, FieldsThatDoNotMapAreWarnedOneLineEach) {
       "extensionsUsed[0]: extension \"KHR_materials_clearcoat\" not supported by twinray",
       "materials[0].extensions.KHR_materials_clearcoat: extension not supported by twinray",
       "meshes[0].primitives[0].attributes.TEXCOORD_1: ignored: only TEXCOORD_0 is read",
-      "materials[0].alphaMode: MASK ignored: twinray renders the material opaque",
+      "materials[0].alphaMode: BLEND ignored: twinray renders the material opaque",
+      "materials[0].alphaCutoff: ignored: the material's alphaMode is not MASK",
       "materials[0].occlusionTexture: ignored"};
   ASSERT_EQ(im.scene.warnings.size(), expected.size());
   for (size_t i = 0; i < expected.size(); ++i) {
