@@ -9,6 +9,7 @@
 #include "app/exit_codes.h"
 #include "app/render_command.h"
 #ifdef TWINRAY_HAS_GPU
+#include "app/check_bsdf_command.h"
 #include "gpu_backend/render_gpu.h"
 #endif
 #include "app/compare_command.h"
@@ -26,6 +27,7 @@ const char* kUsage =
     "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
     "  conformance FOLDER [opts]    load and render every scene of a folder, sort the outcomes\n"
     "  convert SCENE.scn -o OUT.xml write a .scn scene as Mitsuba 3 XML (twinray convert --help)\n"
+    "  check-bsdf FILE.glsl [opts]  chi-square/consistency/extremes suites on a GLSL BSDF (--help)\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
     "             5 output not writable, 6 internal error, 7 render interrupted (outputs hold\n"
     "             the samples so far), 8 checkpoint damaged or of another render\n";
@@ -45,6 +47,7 @@ int main(int argc, char** argv) {
   if (verb == "render") return tr::render_command(argc - 2, argv + 2);
 #ifdef TWINRAY_HAS_GPU
   if (verb == "devices") return tr::devices_command(argc - 2, argv + 2);
+  if (verb == "check-bsdf") return tr::check_bsdf_command(argc - 1, argv + 1);
 #endif
   if (verb == "compare") return tr::compare_command(argc - 1, argv + 1);
   if (verb == "validate") return tr::validate_command(argc - 1, argv + 1);

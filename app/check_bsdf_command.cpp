@@ -1,0 +1,212 @@
+#include "app/check_bsdf_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/arguments.h"
+#include "app/exit_codes.h"
+#include "gpu_backend/gpu_error.h"
+#include "shader_bsdf.h"
+#include "validation/image/json_writer.h"
+
+namespace tr {
+namespace {
+
+namespace validation = twinray::validation;
+
+const char* kUsage =
+    "usage: twinray check-bsdf FILE.glsl [options]\n"
+    "  Validates a BSDF written in GLSL (user_eval, user_sample, user_pdf; see\n"
+    "  validation/shader_bsdf/README.md) on a Vulkan device: chi-square of sample() against\n"
+    "  pdf() at theta_i = 0, 30, 60, 85, 89.9 degrees, consistency (weight = eval/pdf,\n"
+    "  pdf(sampled) = sampled pdf, eval > 0 => pdf > 0, reciprocity), albedo <= 1, and NaN/Inf/\n"
+    "  negative values at extreme directions.\n"
+    "options:\n"
+    "  --params k=v[/v...],...  parameter values (declared in the file with\n"
+    "                           '#pragma twinray_param NAME DEFAULT'); several values per\n"
+    "                           parameter make a grid (the Cartesian product)\n"
+    "  --samples N              chi-square draws per incident direction (default 100000;\n"
+    "                           consistency and albedo use N/4 each)\n"
+    "  --significance A         overall level: a correct BSDF fails with probability A over\n"
+    "                           the whole grid (default 0.01)\n"
+    "  --seed S                 seed of the random draws (default 1)\n"
+    "  --not-reciprocal         skip the reciprocity check\n"
+    "  --device N               Vulkan device: index or name substring (twinray devices)\n"
+    "  --json OUT.json          write the report as JSON\n"
+    "exit status: 0 all checks pass, 1 some fail, 2 usage error, 3 the shader does not compile\n"
+    "             (glslang's errors as FILE:LINE), 4 no usable device, 5 JSON not writable\n";
+
+float parse_float(const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  float v = std::strtof(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw UsageError(what + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+// "alpha=0.1/0.5,f0=0.9" -> {alpha: [0.1, 0.5], f0: [0.9]}
+void parse_params(const std::string& text, std::map<std::string, std::vector<float>>& out) {
+  std::istringstream pairs(text);
+  std::string pair;
+  while (std::getline(pairs, pair, ',')) {
+    std::size_t eq = pair.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--params expects NAME=VALUE[/VALUE...], got '" + pair + "'");
+    std::string name = pair.substr(0, eq);
+    std::vector<float>& values = out[name];
+    if (!values.empty()) throw UsageError("--params: " + name + " given twice");
+    std::istringstream list(pair.substr(eq + 1));
+    std::string v;
+    while (std::getline(list, v, '/')) values.push_back(parse_float(v, "--params " + name));
+    if (values.empty()) throw UsageError("--params: " + name + " has no value");
+  }
+}
+
+std::string json_report(const std::string& file, const std::string& device,
+                        const validation::Report& report, double significance) {
+  JsonWriter j;
+  j.begin_object();
+  j.field("file", file).field("device", device).field("significance", significance);
+  j.field("passed", report.passed());
+  j.key("checks").begin_array();
+  for (const validation::CheckResult& c : report.checks) {
+    j.begin_object();
+    j.field("parameters", c.bsdf).field("check", c.check).field("passed", c.passed);
+    j.key("wi").begin_array().value(double(c.wi.x)).value(double(c.wi.y)).value(double(c.wi.z));
+    j.end_array();
+    if (c.statistical) j.field("p_value", c.p_value).field("alpha", c.alpha);
+    j.field("detail", c.detail);
+    j.end_object();
+  }
+  j.end_array();
+  j.end_object();
+  return j.str();
+}
+
+}  // namespace
+
+int check_bsdf_command(int argc, char** argv) {
+  Arguments args(argc - 1, argv + 1);
+  std::string file, json, device_selector;
+  std::map<std::string, std::vector<float>> params;
+  shader_bsdf::CheckOptions options;
+  std::size_t samples = 100000;
+  std::uint64_t seed = 1;
+  try {
+    while (args.more()) {
+      std::string a = args.next();
+      if (a == "--help" || a == "-h") {
+        std::fputs(kUsage, stdout);
+        return kExitOk;
+      } else if (a == "--params") {
+        parse_params(args.value(a), params);
+      } else if (a == "--samples") {
+        samples = args.uint_value(a, 1000);
+      } else if (a == "--significance") {
+        double s = parse_float(args.value(a), a);
+        if (!(s > 0.0 && s < 1.0)) throw UsageError("--significance must lie in (0, 1)");
+        options.validation.significance = s;
+      } else if (a == "--seed") {
+        seed = args.uint_value(a, 0);
+      } else if (a == "--not-reciprocal") {
+        options.reciprocal = false;
+      } else if (a == "--device") {
+        device_selector = args.value(a);
+      } else if (a == "--json") {
+        json = args.value(a);
+      } else if (!a.empty() && a[0] == '-') {
+        throw UsageError("unknown option '" + a + "'");
+      } else if (file.empty()) {
+        file = a;
+      } else {
+        throw UsageError("more than one shader file ('" + file + "', '" + a + "')");
+      }
+    }
+    if (file.empty()) throw UsageError("no shader file given");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "twinray check-bsdf: %s\n%s", e.what(), kUsage);
+    return kExitUsage;
+  }
+
+  shader_bsdf::ShaderSource source;
+  std::vector<uint32_t> spirv;
+  try {
+    source = shader_bsdf::read_shader_source(file);
+    for (const auto& [name, values] : params) {
+      bool declared = false;
+      for (const shader_bsdf::ShaderParameter& p : source.parameters) declared |= p.name == name;
+      if (!declared) {
+        std::fprintf(stderr,
+                     "twinray check-bsdf: --params %s: %s declares no such parameter "
+                     "('#pragma twinray_param %s DEFAULT')\n",
+                     name.c_str(), file.c_str(), name.c_str());
+        return kExitUsage;
+      }
+    }
+    spirv = shader_bsdf::compile_shader(source);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitBadScene;
+  }
+
+  options.validation.chi_square.sample_count = samples;
+  options.validation.chi_square.seed = seed;
+  options.validation.consistency.sample_count = samples / 4;
+  options.validation.consistency.random_pairs = samples / 4;
+  options.validation.consistency.seed = seed + 1;
+  options.validation.albedo_samples = samples / 4;
+  try {
+    shader_bsdf::ShaderDevice device(spirv, device_selector);
+    const auto grid = shader_bsdf::parameter_grid(source.parameters, params);
+    auto start = std::chrono::steady_clock::now();
+    shader_bsdf::CheckOutcome outcome =
+        shader_bsdf::check_shader_bsdf(device, source, grid, options);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const validation::Report& report = outcome.report;
+    std::cout << file << " on " << device.name() << ": " << grid.size() << " parameter set"
+              << (grid.size() == 1 ? "" : "s") << ", " << outcome.evaluations
+              << " device evaluations in " << outcome.batches << " batches, " << seconds
+              << " s; overall significance " << options.validation.significance << "\n";
+    report.print(std::cout);
+    std::size_t failed = 0;
+    for (const validation::CheckResult& c : report.checks) {
+      if (c.passed) continue;
+      ++failed;
+      std::cout << "FAILED " << c.check << " [" << c.bsdf << "]";
+      if (c.check != "extremes") {
+        double theta = std::acos(std::max(-1.0, std::min(1.0, double(c.wi.z)))) * 180.0 / M_PI;
+        double phi = std::atan2(double(c.wi.y), double(c.wi.x)) * 180.0 / M_PI;
+        std::cout << " at theta_i=" << theta << " phi_i=" << phi << " wi=(" << c.wi.x << ", "
+                  << c.wi.y << ", " << c.wi.z << ")";
+      }
+      if (c.statistical) std::cout << " p=" << c.p_value << " < alpha=" << c.alpha;
+      std::cout << ": " << c.detail << "\n";
+    }
+    std::cout << (failed == 0 ? "PASS" : "FAIL") << ": " << report.checks.size() - failed << "/"
+              << report.checks.size() << " checks passed\n";
+    if (!json.empty()) {
+      std::ofstream out(json, std::ios::binary);
+      out << json_report(file, device.name(), report, options.validation.significance) << "\n";
+      if (!out) {
+        std::fprintf(stderr, "twinray check-bsdf: cannot write %s\n", json.c_str());
+        return kExitOutput;
+      }
+    }
+    return failed == 0 ? kExitOk : kExitFailed;
+  } catch (const GpuError& e) {
+    std::fprintf(stderr, "twinray check-bsdf: %s\n", e.what());
+    return kExitNoBackend;
+  } catch (...) {
+    return report_failure("twinray check-bsdf");
+  }
+}
+
+}  // namespace tr
