@@ -1,0 +1,34 @@
+// BROKEN on purpose (examples/shader_bsdfs/lambert.glsl with a bug): the density forgets the
+// cosine, pdf = 1/pi instead of cos theta_o / pi, in user_pdf and in user_sample alike, and the
+// weight follows it (eval / pdf), so only the chi-square test can tell; it fails there.
+#pragma twinray_param albedo 0.8
+
+const float USER_PI = 3.14159265358979;
+
+// f = albedo / pi on the upper hemisphere, times cos theta_o.
+vec3 user_eval(vec3 wi, vec3 wo, UserParams p) {
+  if (wi.z <= 0.0 || wo.z <= 0.0) return vec3(0.0);
+  return vec3(p.albedo / USER_PI * wo.z);
+}
+
+// Cosine-weighted hemisphere: pdf = cos theta_o / pi.
+float user_pdf(vec3 wi, vec3 wo, UserParams p) {
+  if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+  return 1.0 / USER_PI;
+}
+
+// Malley's method: a uniform point on the unit disk lifted to the hemisphere (pbrt-v3 13.6.3).
+vec3 user_sample(vec3 wi, vec3 u, UserParams p, out vec3 wo, out float pdf) {
+  wo = vec3(0.0, 0.0, 1.0);
+  pdf = 0.0;
+  if (wi.z <= 0.0) return vec3(0.0);
+  float r = sqrt(u.y);
+  float phi = 2.0 * USER_PI * u.z;
+  wo = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.y)));
+  pdf = 1.0 / USER_PI;
+  if (!(wo.z > 0.0)) {
+    pdf = 0.0;
+    return vec3(0.0);
+  }
+  return vec3(p.albedo * wo.z);  // f cos / pdf
+}
