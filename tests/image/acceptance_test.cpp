@@ -214,6 +214,34 @@ TEST_F(Acceptance, RoundingControlExcusesOnlyTheSensitivePixels) {
   EXPECT_FALSE(insensitive.passed);
 }
 
+// fraction_over_well_conditioned: 2% of the pixels, scattered, 1e-2 off (the 99% rule fails);
+// a control that moves exactly those pixels excuses them from the fraction, a control that
+// moves none does not, and a control that marks more than 5% of the image fails the cap.
+TEST_F(Acceptance, WellConditionedFractionExcusesOnlySensitivePixels) {
+  RgbImage render = testing::noisy_render(ref(), var(), kSpp, 1);
+  RgbImage off = render, control = render, broad = render;
+  const size_t pixels = render.pixel_count();
+  size_t moved = 0;
+  for (size_t i = 0; i < pixels; i += 50, ++moved)
+    for (int c = 0; c < 3; ++c) {
+      off.rgb[3 * i + c] += 1e-2;
+      control.rgb[3 * i + c] += 5e-3;
+    }
+  for (size_t i = 0; i < pixels; i += 10)
+    for (int c = 0; c < 3; ++c) broad.rgb[3 * i + c] += 5e-3;
+  ASSERT_GT(moved, pixels / 100);
+  LockstepOptions o;
+  o.fraction_over_well_conditioned = true;
+  EXPECT_FALSE(lockstep_compare(off, render, {}, &control).passed);
+  LockstepResult excused = lockstep_compare(off, render, o, &control);
+  EXPECT_EQ(excused.rounding_sensitive, moved);
+  EXPECT_DOUBLE_EQ(excused.fraction_within, 1.0);
+  EXPECT_TRUE(excused.passed);
+  EXPECT_FALSE(lockstep_compare(off, render, o, &render).passed);
+  EXPECT_FALSE(lockstep_compare(off, render, o, &broad).passed);
+  EXPECT_FALSE(lockstep_compare(off, render, o).passed);
+}
+
 TEST_F(Acceptance, LockstepToleratesRoundingButNotSmallBias) {
   RgbImage render = testing::noisy_render(ref(), var(), kSpp, 1);
   testing::Gaussian normal(99);

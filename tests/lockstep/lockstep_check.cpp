@@ -25,14 +25,15 @@ Scene camera_moved_one_ulp(const Scene& scene) {
 
 }  // namespace
 
-void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed) {
+void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed,
+                     const LockstepOptions& lockstep) {
   RenderOptions options;
   options.spp = spp;
   options.seed = seed;
   RenderResult cpu = render_cpu(scene, options);
   RenderResult gpu = render_gpu(scene, options);
   RgbImage control = mean_image(render_cpu(camera_moved_one_ulp(scene), options));
-  LockstepResult r = lockstep_compare(mean_image(gpu), mean_image(cpu), {}, &control);
+  LockstepResult r = lockstep_compare(mean_image(gpu), mean_image(cpu), lockstep, &control);
   std::printf(
       "%s, %u spp: %.6f of pixels within tolerance, %zu systematic, %zu clustered windows "
       "(%zu rounding-sensitive pixels)\n",

@@ -9,9 +9,11 @@
 #include <string>
 
 #include "scenes/scene.h"
+#include "validation/image/lockstep.h"
 
 namespace tr {
 
-void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed);
+void expect_lockstep(const std::string& label, const Scene& scene, uint32_t spp, uint32_t seed,
+                     const LockstepOptions& options = {});
 
 }  // namespace tr

@@ -33,6 +33,7 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
   r.rounding_controlled = rounding_control != nullptr;
   r.excess_map.resize(r.pixels);
   std::vector<char> sensitive(r.pixels, 0);
+  size_t outside_sensitive = 0;
   std::vector<LockstepPixel> all(r.pixels);
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
@@ -58,8 +59,14 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
       r.rounding_sensitive += sensitive[size_t(y) * a.width + x];
       r.excess_map[size_t(y) * a.width + x] = float(p.excess);
       if (p.excess > 1.0) ++r.pixels_outside;
+      if (p.excess > 1.0 && sensitive[size_t(y) * a.width + x]) ++outside_sensitive;
     }
   r.fraction_within = double(r.pixels - r.pixels_outside) / double(r.pixels);
+  const bool well_conditioned_only = options.fraction_over_well_conditioned && rounding_control;
+  if (well_conditioned_only && r.pixels > r.rounding_sensitive)
+    r.fraction_within =
+        double(r.pixels - r.rounding_sensitive - (r.pixels_outside - outside_sensitive)) /
+        double(r.pixels - r.rounding_sensitive);
   size_t worst_n = std::min(all.size(), size_t(std::max(options.worst_count, 0)));
   std::partial_sort(
       all.begin(), all.begin() + worst_n, all.end(),
@@ -127,6 +134,9 @@ LockstepResult lockstep_compare(const RgbImage& a, const RgbImage& b,
   r.worst_blocks = flagged;
   r.passed = r.fraction_within >= options.required_fraction && r.systematic_cells == 0 &&
              r.clustered_windows == 0;
+  if (options.fraction_over_well_conditioned)
+    r.passed = r.passed && rounding_control &&
+               double(r.rounding_sensitive) <= options.max_rounding_sensitive * double(r.pixels);
   return r;
 }
 
