@@ -14,7 +14,6 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
-#include <unordered_map>
 
 #include "gpu_backend/device_info.h"
 #include "gpu_backend/gpu_error.h"
@@ -381,21 +380,6 @@ void ShaderDevice::evaluate(const std::vector<Query>& queries, const std::vector
 
 namespace {
 
-struct QueryHash {
-  std::size_t operator()(const ShaderDevice::Query& q) const {
-    uint32_t words[12];
-    std::memcpy(words, &q, sizeof(q));
-    uint64_t h = 1469598103934665603ull;  // FNV-1a
-    for (uint32_t w : words) h = (h ^ w) * 1099511628211ull;
-    return std::size_t(h ^ (h >> 29));
-  }
-};
-struct QueryEqual {
-  bool operator()(const ShaderDevice::Query& a, const ShaderDevice::Query& b) const {
-    return std::memcmp(&a, &b, sizeof(a)) == 0;
-  }
-};
-
 ShaderDevice::Query make_query(uint32_t op, const glm::vec3& wi, const glm::vec3& arg) {
   ShaderDevice::Query q;
   std::memset(&q, 0, sizeof(q));
@@ -411,16 +395,77 @@ ShaderDevice::Query make_query(uint32_t op, const glm::vec3& wi, const glm::vec3
 
 }  // namespace
 
+// Every query asked so far, its device result (zeros while pending) and an open-addressing table
+// of their positions. A check calls in much the same order on every run, so the positions the
+// previous run visited (its tape) are tried in order first, without hashing (as
+// tests/bsdf_gpu/gpu_core_calls.cpp does).
 struct ShaderBsdf::Impl {
-  std::unordered_map<ShaderDevice::Query, ShaderDevice::Result, QueryHash, QueryEqual> cache;
-  std::vector<ShaderDevice::Query> misses;
-  std::unordered_map<ShaderDevice::Query, char, QueryHash, QueryEqual> missed;
+  static constexpr uint32_t kEmpty = 0xffffffffu;
+  std::vector<ShaderDevice::Query> queries;
+  std::vector<ShaderDevice::Result> results;
+  std::size_t evaluated = 0;  // queries[0, evaluated) hold device results
+  std::vector<uint32_t> table;
+  std::vector<uint32_t> tape, previous_tape;
+  std::vector<uint32_t> tape_index;  // position -> its first call in previous_tape
+  std::size_t cursor = 0;
 
-  ShaderDevice::Result lookup(const ShaderDevice::Query& q) {
-    auto it = cache.find(q);
-    if (it != cache.end()) return it->second;
-    if (missed.emplace(q, 0).second) misses.push_back(q);
-    return ShaderDevice::Result{};
+  static uint64_t hash(const ShaderDevice::Query& q) {
+    uint32_t words[12];
+    std::memcpy(words, &q, sizeof(q));
+    uint64_t h = 1469598103934665603ull;  // FNV-1a, then the splitmix64 finalizer
+    for (uint32_t w : words) h = (h ^ w) * 1099511628211ull;
+    h ^= h >> 30;
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+  }
+  static bool same(const ShaderDevice::Query& a, const ShaderDevice::Query& b) {
+    return std::memcmp(&a, &b, sizeof(a)) == 0;
+  }
+  void insert(uint32_t position) {
+    const std::size_t mask = table.size() - 1;
+    for (std::size_t slot = hash(queries[position]) & mask;; slot = (slot + 1) & mask) {
+      if (table[slot] == kEmpty) {
+        table[slot] = position;
+        return;
+      }
+    }
+  }
+  void grow() {
+    table.assign(std::max<std::size_t>(1024, table.size() * 2), kEmpty);
+    for (uint32_t p = 0; p < queries.size(); ++p) insert(p);
+  }
+  uint32_t find(const ShaderDevice::Query& q) const {
+    if (table.empty()) return kEmpty;
+    const std::size_t mask = table.size() - 1;
+    for (std::size_t slot = hash(q) & mask;; slot = (slot + 1) & mask) {
+      uint32_t p = table[slot];
+      if (p == kEmpty || same(queries[p], q)) return p;
+    }
+  }
+  const ShaderDevice::Result& lookup(const ShaderDevice::Query& q) {
+    if (cursor < previous_tape.size()) {
+      uint32_t p = previous_tape[cursor];
+      if (same(queries[p], q)) {
+        ++cursor;
+        tape.push_back(p);
+        return results[p];
+      }
+    }
+    uint32_t p = find(q);
+    if (p != kEmpty && p < tape_index.size() && tape_index[p] != kEmpty) {
+      // Calls were added or dropped since the previous run: continue its tape after this call.
+      cursor = tape_index[p] + 1;
+    } else if (p == kEmpty) {
+      if (2 * (queries.size() + 1) > table.size()) grow();
+      p = uint32_t(queries.size());
+      queries.push_back(q);
+      results.push_back(ShaderDevice::Result{});
+      insert(p);
+    }
+    tape.push_back(p);
+    return results[p];
   }
 };
 
@@ -436,7 +481,7 @@ validation::BsdfUnderTest ShaderBsdf::under_test(const std::string& name, bool r
   b.eval_includes_cosine = true;
   b.reciprocal = reciprocal;
   b.sample = [m](const glm::vec3& wi, float u1, const glm::vec2& u2) {
-    ShaderDevice::Result r = m->lookup(make_query(0, wi, glm::vec3(u1, u2.x, u2.y)));
+    const ShaderDevice::Result& r = m->lookup(make_query(0, wi, glm::vec3(u1, u2.x, u2.y)));
     validation::BsdfSample s;
     s.wo = glm::vec3(r.wo_pdf[0], r.wo_pdf[1], r.wo_pdf[2]);
     s.pdf = r.wo_pdf[3];
@@ -447,7 +492,7 @@ validation::BsdfUnderTest ShaderBsdf::under_test(const std::string& name, bool r
     return m->lookup(make_query(1, wi, wo)).wo_pdf[3];
   };
   b.eval = [m](const glm::vec3& wi, const glm::vec3& wo) {
-    ShaderDevice::Result r = m->lookup(make_query(2, wi, wo));
+    const ShaderDevice::Result& r = m->lookup(make_query(2, wi, wo));
     return glm::vec3(r.value[0], r.value[1], r.value[2]);
   };
   return b;
@@ -455,19 +500,31 @@ validation::BsdfUnderTest ShaderBsdf::under_test(const std::string& name, bool r
 
 void ShaderBsdf::run_check(const std::function<void()>& check) {
   Impl& m = *impl_;
+  // The checks share few arguments: each starts with an empty cache, which bounds the memory.
+  m.queries.clear();
+  m.results.clear();
+  m.evaluated = 0;
+  m.table.clear();
+  m.tape.clear();
   for (int run = 0;; ++run) {
-    m.misses.clear();
-    m.missed.clear();
+    m.previous_tape.swap(m.tape);
+    m.tape.clear();
+    m.cursor = 0;
+    m.tape_index.assign(m.queries.size(), Impl::kEmpty);
+    for (std::size_t i = m.previous_tape.size(); i-- > 0;)
+      m.tape_index[m.previous_tape[i]] = uint32_t(i);
     check();
-    if (m.misses.empty()) return;
+    if (m.queries.size() == m.evaluated) return;
     if (run + 1 >= kMaxRuns)
       throw std::runtime_error("check-bsdf: a check still asked for new values after " +
                                std::to_string(kMaxRuns) + " runs");
+    std::vector<ShaderDevice::Query> pending(m.queries.begin() + m.evaluated, m.queries.end());
     std::vector<ShaderDevice::Result> results;
-    device_.evaluate(m.misses, parameters_, results);
-    evaluations_ += m.misses.size();
+    device_.evaluate(pending, parameters_, results);
+    std::copy(results.begin(), results.end(), m.results.begin() + m.evaluated);
+    evaluations_ += pending.size();
     ++batches_;
-    for (std::size_t i = 0; i < m.misses.size(); ++i) m.cache.emplace(m.misses[i], results[i]);
+    m.evaluated = m.queries.size();
   }
 }
 
