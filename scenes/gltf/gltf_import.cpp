@@ -18,6 +18,7 @@
 #include <tuple>
 
 #include "scenes/bitmap.h"
+#include "scenes/json_node_builder.h"
 #include "scenes/scn/json_lines.h"
 
 namespace tr {
@@ -43,10 +44,10 @@ const int kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
 // What a baked texture holds (glTF 2.0 spec, "Materials": the channels each material map uses).
 enum class Bake { Color, Red, Green, Blue, Alpha, Normal };
 
-class Importer {
+class Importer : JsonNodeBuilder {
  public:
   Importer(const std::string& path, const LoadOptions& options, const fs::path& work_dir)
-      : path_(path), options_(options), work_(work_dir) {}
+      : JsonNodeBuilder(path), options_(options), work_(work_dir) {}
 
   GltfScene run() {
     std::error_code ec;
@@ -87,48 +88,12 @@ class Importer {
     walk_scene();
     add_sensor();
     add_integrator();
+    out_.warnings = std::move(warnings_);
     return std::move(out_);
   }
 
  private:
-  // --- locations and messages (as scenes/scn/scn_import.cpp) ---
-
-  Location at(std::string pointer) const {
-    for (;;) {
-      auto it = lines_.find(pointer);
-      if (it != lines_.end() || pointer.empty())
-        return {path_, it != lines_.end() ? it->second : 1};
-      pointer = pointer.substr(0, pointer.rfind('/'));
-    }
-  }
-
-  static std::string field(const std::string& pointer) {
-    std::string out;
-    size_t i = 1;
-    while (i <= pointer.size() && !pointer.empty()) {
-      size_t j = pointer.find('/', i);
-      std::string token = pointer.substr(i, j == std::string::npos ? std::string::npos : j - i);
-      bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
-      out += index ? "[" + token + "]" : (out.empty() ? "" : ".") + token;
-      if (j == std::string::npos) break;
-      i = j + 1;
-    }
-    return out.empty() ? "the scene" : out;
-  }
-
-  template <typename... Parts>
-  [[noreturn]] void bad(const std::string& pointer, const Parts&... parts) const {
-    fail(at(pointer), field(pointer), ": ", parts...);
-  }
-
-  template <typename... Parts>
-  void warn(const std::string& pointer, const Parts&... parts) {
-    std::ostringstream os;
-    os << to_string(at(pointer)) << ": " << field(pointer) << ": ";
-    (os << ... << parts);
-    std::string line = os.str();
-    if (warned_.insert(line).second) out_.warnings.push_back(line);
-  }
+  // --- messages ---
 
   // Warns about each field of `o` not in `names` (`extensions` and `extras` are handled apart:
   // extras carry application data with no rendering meaning, spec "Extras").
@@ -159,21 +124,9 @@ class Importer {
     return it == o.end() ? nullptr : &*it;
   }
 
-  const json& object(const json& v, const std::string& pointer) const {
-    if (!v.is_object()) bad(pointer, "expected an object, not ", v.type_name());
-    return v;
-  }
-
   const json& array(const json& v, const std::string& pointer) const {
     if (!v.is_array()) bad(pointer, "expected an array, not ", v.type_name());
     return v;
-  }
-
-  double number(const json& v, const std::string& pointer) const {
-    if (!v.is_number()) bad(pointer, "expected a number, not ", v.type_name());
-    double d = v.get<double>();
-    if (!std::isfinite(d)) bad(pointer, "expected a finite number");
-    return d;
   }
 
   double number_or(const json& o, const char* key, double fallback, const std::string& pointer) {
@@ -186,11 +139,6 @@ class Importer {
     long long i = v.get<long long>();
     if (i < 0 || size_t(i) >= count) bad(pointer, "index ", i, " out of range (", count, " items)");
     return i;
-  }
-
-  std::string text(const json& v, const std::string& pointer) const {
-    if (!v.is_string()) bad(pointer, "expected a string, not ", v.type_name());
-    return v.get<std::string>();
   }
 
   std::vector<double> numbers(const json& v, const std::string& pointer, size_t n) const {
@@ -366,36 +314,6 @@ class Importer {
     }
     if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
     return plys_[i] = file.string();
-  }
-
-  // --- node tree helpers ---
-
-  NodePtr make(const std::string& tag, const std::string& type, const std::string& pointer) {
-    auto n = std::make_shared<Node>();
-    n->tag = tag;
-    n->type = type;
-    n->loc = at(pointer);
-    return n;
-  }
-  Property& add(Node& n, const std::string& name, PropertyKind kind, const std::string& pointer) {
-    Property p;
-    p.name = name;
-    p.kind = kind;
-    p.loc = at(pointer);
-    n.props.push_back(p);
-    return n.props.back();
-  }
-  void add_float(Node& n, const std::string& name, double v, const std::string& pointer) {
-    add(n, name, PropertyKind::Float, pointer).number = v;
-  }
-  void add_color(Node& n, const std::string& name, glm::dvec3 v, const std::string& pointer) {
-    add(n, name, PropertyKind::Color, pointer).vec = v;
-  }
-  void add_object(Node& n, NodePtr o, const std::string& pointer) {
-    add(n, "_arg_" + std::to_string(unnamed_++), PropertyKind::Object, pointer).object = o;
-  }
-  void add_transform(Node& n, const glm::dmat4& m, const std::string& pointer) {
-    add(n, "to_world", PropertyKind::Transform, pointer).matrix = m;
   }
 
   // --- scene graph (spec "Nodes and Hierarchy") ---
@@ -1052,14 +970,12 @@ class Importer {
     add_object(*root_, path, "");
   }
 
-  std::string path_;
   const LoadOptions& options_;
   fs::path work_;
   fs::path dir_;
   std::string glb_bin_;
   bool have_glb_bin_ = false;
   json doc_;
-  std::map<std::string, int> lines_;
   Assimp::Importer importer_;
   const aiScene* ai_ = nullptr;
   std::vector<unsigned> mesh_offsets_;
@@ -1074,8 +990,6 @@ class Importer {
   std::map<size_t, glm::dmat4> worlds_;
   GltfScene out_;
   NodePtr root_;
-  std::set<std::string> warned_;
-  int unnamed_ = 0;
 };
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "scenes/json_node_builder.h"
 #include "scenes/scn/json_lines.h"
 #include "scenes/scn/obj_submeshes.h"
 
@@ -28,11 +29,11 @@ const long long kDefaultSpp = 64;
 const char* const kPrincipledFields[] = {"metallic",     "roughness",   "opacity", "ior",
                                          "speculartint", "anisotropic", "sheen",   "sheentint"};
 
-class Importer {
+class Importer : JsonNodeBuilder {
  public:
   Importer(const std::string& path, const LoadOptions& options, const fs::path& mesh_dir,
            const std::string& mesh_prefix, bool relative_names)
-      : path_(path),
+      : JsonNodeBuilder(path),
         options_(options),
         mesh_dir_(mesh_dir),
         mesh_prefix_(mesh_prefix),
@@ -85,6 +86,7 @@ class Importer {
     for (const auto& [name, m] : materials_)
       if (!used_.count(name))
         warn(m.pointer, "material \"", name, "\" is used by no entity and no usemtl group");
+    out_.warnings = std::move(warnings_);
     return std::move(out_);
   }
 
@@ -95,44 +97,7 @@ class Importer {
     NodePtr bsdf;  // made when first used
   };
 
-  // --- locations and messages ---
-
-  Location at(std::string pointer) const {
-    for (;;) {
-      auto it = lines_.find(pointer);
-      if (it != lines_.end() || pointer.empty())
-        return {path_, it != lines_.end() ? it->second : 1};
-      pointer = pointer.substr(0, pointer.rfind('/'));
-    }
-  }
-
-  // A JSON pointer as a reader names the field: "/entities/1/radius" -> entities[1].radius.
-  static std::string field(const std::string& pointer) {
-    std::string out;
-    size_t i = 1;
-    while (i <= pointer.size() && !pointer.empty()) {
-      size_t j = pointer.find('/', i);
-      std::string token = pointer.substr(i, j == std::string::npos ? std::string::npos : j - i);
-      bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
-      out += index ? "[" + token + "]" : (out.empty() ? "" : ".") + token;
-      if (j == std::string::npos) break;
-      i = j + 1;
-    }
-    return out.empty() ? "the scene" : out;
-  }
-
-  template <typename... Parts>
-  [[noreturn]] void bad(const std::string& pointer, const Parts&... parts) const {
-    fail(at(pointer), field(pointer), ": ", parts...);
-  }
-
-  template <typename... Parts>
-  void warn(const std::string& pointer, const Parts&... parts) {
-    std::ostringstream os;
-    os << to_string(at(pointer)) << ": " << field(pointer) << ": ";
-    (os << ... << parts);
-    out_.warnings.push_back(os.str());
-  }
+  // --- messages ---
 
   // Warns about every field of object `o` not in `names`; `what` says why it is not read.
   void known(const json& o, const std::string& pointer, std::set<std::string> names,
@@ -143,26 +108,9 @@ class Importer {
 
   // --- typed reads ---
 
-  const json& object(const json& v, const std::string& pointer) const {
-    if (!v.is_object()) bad(pointer, "expected an object, not ", v.type_name());
-    return v;
-  }
-
-  double number(const json& v, const std::string& pointer) const {
-    if (!v.is_number()) bad(pointer, "expected a number, not ", v.type_name());
-    double d = v.get<double>();
-    if (!std::isfinite(d)) bad(pointer, "expected a finite number");
-    return d;
-  }
-
   long long integer(const json& v, const std::string& pointer) const {
     if (!v.is_number_integer()) bad(pointer, "expected an integer, not ", v.type_name());
     return v.get<long long>();
-  }
-
-  std::string text(const json& v, const std::string& pointer) const {
-    if (!v.is_string()) bad(pointer, "expected a string, not ", v.type_name());
-    return v.get<std::string>();
   }
 
   glm::dvec3 vec3(const json& v, const std::string& pointer) const {
@@ -173,35 +121,6 @@ class Importer {
 
   // --- node tree ---
 
-  NodePtr make(const std::string& tag, const std::string& type, const std::string& pointer) {
-    auto n = std::make_shared<Node>();
-    n->tag = tag;
-    n->type = type;
-    n->loc = at(pointer);
-    return n;
-  }
-
-  Property& add(Node& n, const std::string& name, PropertyKind kind, const std::string& pointer) {
-    Property p;
-    p.name = name;
-    p.kind = kind;
-    p.loc = at(pointer);
-    n.props.push_back(p);
-    return n.props.back();
-  }
-  void add_float(Node& n, const std::string& name, double v, const std::string& pointer) {
-    add(n, name, PropertyKind::Float, pointer).number = v;
-  }
-  void add_color(Node& n, const std::string& name, glm::dvec3 v, const std::string& pointer) {
-    add(n, name, PropertyKind::Color, pointer).vec = v;
-  }
-  void add_object(Node& n, NodePtr o, const std::string& pointer) {
-    std::string name = "_arg_" + std::to_string(unnamed_++);
-    add(n, name, PropertyKind::Object, pointer).object = std::move(o);
-  }
-  void add_transform(Node& n, const glm::dmat4& m, const std::string& pointer) {
-    add(n, "to_world", PropertyKind::Transform, pointer).matrix = m;
-  }
   // An integer property that -D `name` may override; `value` is the .scn's.
   void add_parameter(Node& n, const std::string& property, const std::string& name, long long value,
                      const std::string& pointer) {
@@ -593,19 +512,16 @@ class Importer {
     }
   }
 
-  std::string path_;
   const LoadOptions& options_;
   fs::path mesh_dir_;
   std::string mesh_prefix_;
   bool relative_names_;
   json doc_;
-  std::map<std::string, int> lines_;
   ScnScene out_;
   NodePtr root_;
   std::map<std::string, Material> materials_;
   std::set<std::string> used_;
   std::map<std::string, std::string> images_;  // canonical path -> the name bitmaps read
-  int unnamed_ = 0;
 };
 
 }  // namespace

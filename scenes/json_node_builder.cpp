@@ -1,0 +1,84 @@
+#include "scenes/json_node_builder.h"
+
+#include <cmath>
+
+namespace tr {
+
+Location JsonNodeBuilder::at(std::string pointer) const {
+  for (;;) {
+    auto it = lines_.find(pointer);
+    if (it != lines_.end() || pointer.empty()) return {path_, it != lines_.end() ? it->second : 1};
+    pointer = pointer.substr(0, pointer.rfind('/'));
+  }
+}
+
+std::string JsonNodeBuilder::field(const std::string& pointer) {
+  std::string out;
+  size_t i = 1;
+  while (i <= pointer.size() && !pointer.empty()) {
+    size_t j = pointer.find('/', i);
+    std::string token = pointer.substr(i, j == std::string::npos ? std::string::npos : j - i);
+    bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
+    out += index ? "[" + token + "]" : (out.empty() ? "" : ".") + token;
+    if (j == std::string::npos) break;
+    i = j + 1;
+  }
+  return out.empty() ? "the scene" : out;
+}
+
+const nlohmann::json& JsonNodeBuilder::object(const json& v, const std::string& pointer) const {
+  if (!v.is_object()) bad(pointer, "expected an object, not ", v.type_name());
+  return v;
+}
+
+double JsonNodeBuilder::number(const json& v, const std::string& pointer) const {
+  if (!v.is_number()) bad(pointer, "expected a number, not ", v.type_name());
+  double d = v.get<double>();
+  if (!std::isfinite(d)) bad(pointer, "expected a finite number");
+  return d;
+}
+
+std::string JsonNodeBuilder::text(const json& v, const std::string& pointer) const {
+  if (!v.is_string()) bad(pointer, "expected a string, not ", v.type_name());
+  return v.get<std::string>();
+}
+
+NodePtr JsonNodeBuilder::make(const std::string& tag, const std::string& type,
+                              const std::string& pointer) const {
+  auto n = std::make_shared<Node>();
+  n->tag = tag;
+  n->type = type;
+  n->loc = at(pointer);
+  return n;
+}
+
+Property& JsonNodeBuilder::add(Node& n, const std::string& name, PropertyKind kind,
+                               const std::string& pointer) const {
+  Property p;
+  p.name = name;
+  p.kind = kind;
+  p.loc = at(pointer);
+  n.props.push_back(p);
+  return n.props.back();
+}
+
+void JsonNodeBuilder::add_float(Node& n, const std::string& name, double v,
+                                const std::string& pointer) const {
+  add(n, name, PropertyKind::Float, pointer).number = v;
+}
+
+void JsonNodeBuilder::add_color(Node& n, const std::string& name, glm::dvec3 v,
+                                const std::string& pointer) const {
+  add(n, name, PropertyKind::Color, pointer).vec = v;
+}
+
+void JsonNodeBuilder::add_object(Node& n, NodePtr o, const std::string& pointer) {
+  add(n, "_arg_" + std::to_string(unnamed_++), PropertyKind::Object, pointer).object = std::move(o);
+}
+
+void JsonNodeBuilder::add_transform(Node& n, const glm::dmat4& m,
+                                    const std::string& pointer) const {
+  add(n, "to_world", PropertyKind::Transform, pointer).matrix = m;
+}
+
+}  // namespace tr

@@ -1,0 +1,72 @@
+// What the JSON scene importers (scenes/scn, scenes/gltf) share: the file:line of a JSON pointer
+// (scenes/scn/json_lines.h), one-line errors and warnings that name the field as a reader
+// writes it ("/entities/1/radius" -> entities[1].radius), typed reads, and the XML parser's
+// node tree (scenes/xml_parser.h) they build, so that everything after them is the XML path.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scenes/properties.h"
+#include "scenes/scene_error.h"
+
+namespace tr {
+
+class JsonNodeBuilder {
+ protected:
+  using json = nlohmann::json;
+
+  explicit JsonNodeBuilder(std::string path) : path_(std::move(path)) {}
+
+  // --- locations and messages ---
+
+  // The line of `pointer`, else of its nearest ancestor with a known line.
+  Location at(std::string pointer) const;
+  static std::string field(const std::string& pointer);
+
+  template <typename... Parts>
+  [[noreturn]] void bad(const std::string& pointer, const Parts&... parts) const {
+    fail(at(pointer), field(pointer), ": ", parts...);
+  }
+
+  // One "file:line: field: ..." line in warnings_, each distinct line once.
+  template <typename... Parts>
+  void warn(const std::string& pointer, const Parts&... parts) {
+    std::ostringstream os;
+    os << to_string(at(pointer)) << ": " << field(pointer) << ": ";
+    (os << ... << parts);
+    std::string line = os.str();
+    if (warned_.insert(line).second) warnings_.push_back(line);
+  }
+
+  // --- typed reads (each failure names the field) ---
+
+  const json& object(const json& v, const std::string& pointer) const;
+  double number(const json& v, const std::string& pointer) const;
+  std::string text(const json& v, const std::string& pointer) const;
+
+  // --- node tree ---
+
+  NodePtr make(const std::string& tag, const std::string& type, const std::string& pointer) const;
+  Property& add(Node& n, const std::string& name, PropertyKind kind,
+                const std::string& pointer) const;
+  void add_float(Node& n, const std::string& name, double v, const std::string& pointer) const;
+  void add_color(Node& n, const std::string& name, glm::dvec3 v, const std::string& pointer) const;
+  void add_object(Node& n, NodePtr o, const std::string& pointer);
+  void add_transform(Node& n, const glm::dmat4& m, const std::string& pointer) const;
+
+  std::string path_;
+  std::map<std::string, int> lines_;  // JSON pointer -> line
+  std::vector<std::string> warnings_;
+
+ private:
+  std::set<std::string> warned_;
+  int unnamed_ = 0;
+};
+
+}  // namespace tr
