@@ -2,7 +2,34 @@
 
 #include <cmath>
 
+#include "scenes/scn/json_lines.h"
+
 namespace tr {
+
+nlohmann::json JsonNodeBuilder::parse_document(const std::string& text) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    int line = 1;
+    for (size_t i = 0; i < e.byte && i < text.size(); ++i) line += text[i] == '\n';
+    std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ..."
+    size_t cut = what.find("] ");
+    fail(Location{path_, line},
+         "malformed JSON: ", cut == std::string::npos ? what : what.substr(cut + 2));
+  }
+  JsonLines lines = json_value_lines(text);
+  lines_ = lines.lines;
+  if (lines.too_deep)
+    fail(Location{path_, lines.too_deep}, "arrays and objects nested deeper than ", kJsonMaxDepth,
+         " levels");
+  if (!lines.repeated.empty()) {
+    const auto& [pointer, line] = *lines.repeated.begin();
+    fail(Location{path_, line}, field(pointer), ": given twice (first on line ", lines_[pointer],
+         ")");
+  }
+  return doc;
+}
 
 Location JsonNodeBuilder::at(std::string pointer) const {
   for (;;) {

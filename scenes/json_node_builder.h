@@ -23,6 +23,11 @@ class JsonNodeBuilder {
 
   explicit JsonNodeBuilder(std::string path) : path_(std::move(path)) {}
 
+  // Parses `text` (the document of path_) and records the line of each value in lines_; a
+  // malformed document, one nested deeper than kJsonMaxDepth or a key given twice in one object
+  // (RFC 8259 section 4 leaves its meaning to the reader) is a one-line error.
+  json parse_document(const std::string& text);
+
   // --- locations and messages ---
 
   // The line of `pointer`, else of its nearest ancestor with a known line.

@@ -19,7 +19,6 @@
 
 #include "scenes/bitmap.h"
 #include "scenes/json_node_builder.h"
-#include "scenes/scn/json_lines.h"
 
 namespace tr {
 
@@ -56,21 +55,7 @@ class Importer : JsonNodeBuilder {
     dir_ = fs::path(path_).parent_path();
     if (dir_.empty()) dir_ = ".";
     std::string text = read_document();
-    try {
-      doc_ = json::parse(text);
-    } catch (const json::parse_error& e) {
-      int line = 1;
-      for (size_t i = 0; i < e.byte && i < text.size(); ++i) line += text[i] == '\n';
-      std::string what = e.what();
-      size_t cut = what.find("] ");
-      fail(Location{path_, line},
-           "malformed JSON: ", cut == std::string::npos ? what : what.substr(cut + 2));
-    }
-    JsonLines lines = json_value_lines(text);
-    lines_ = lines.lines;
-    if (lines.too_deep)
-      fail(Location{path_, lines.too_deep}, "arrays and objects nested deeper than ", kJsonMaxDepth,
-           " levels");
+    doc_ = parse_document(text);
     if (!doc_.is_object()) bad("", "expected a JSON object, not ", doc_.type_name());
     check_asset();
     read_parameters();

@@ -10,7 +10,6 @@
 #include <sstream>
 
 #include "scenes/json_node_builder.h"
-#include "scenes/scn/json_lines.h"
 #include "scenes/scn/obj_submeshes.h"
 
 namespace tr {
@@ -47,26 +46,7 @@ class Importer : JsonNodeBuilder {
     std::stringstream text;
     text << in.rdbuf();
     std::string s = text.str();
-    try {
-      doc_ = json::parse(s);
-    } catch (const json::parse_error& e) {
-      int line = 1;
-      for (size_t i = 0; i < e.byte && i < s.size(); ++i) line += s[i] == '\n';
-      std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ..."
-      size_t cut = what.find("] ");
-      fail(Location{path_, line},
-           "malformed JSON: ", cut == std::string::npos ? what : what.substr(cut + 2));
-    }
-    JsonLines lines = json_value_lines(s);
-    lines_ = lines.lines;
-    if (lines.too_deep)
-      fail(Location{path_, lines.too_deep}, "arrays and objects nested deeper than ", kJsonMaxDepth,
-           " levels");
-    if (!lines.repeated.empty()) {
-      const auto& [pointer, line] = *lines.repeated.begin();
-      fail(Location{path_, line}, field(pointer), ": given twice (first on line ", lines_[pointer],
-           ")");
-    }
+    doc_ = parse_document(s);
     if (!doc_.is_object()) bad("", "expected a JSON object, not ", doc_.type_name());
 
     fs::path dir = fs::path(path_).parent_path();
