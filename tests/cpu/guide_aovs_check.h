@@ -14,6 +14,7 @@
 
 #include "core/integrator.h"
 #include "cpu_backend/bound_scene.h"
+#include "render/render.h"
 #include "scenes/load_scene.h"
 
 namespace tr::test {
@@ -59,6 +60,18 @@ inline void expect_guide_sphere(const Scene& scene, std::uint32_t seed,
     }
   EXPECT_GT(hits, 100);
   EXPECT_GT(misses, 100);
+}
+
+// The same for a 1-spp render of the scene (aov_mean: 3 values per guide per pixel).
+inline void expect_guide_sphere_render(const Scene& scene, const RenderResult& r) {
+  ASSERT_EQ(r.aov_count, 3u);
+  ASSERT_EQ(r.spp, 1u);
+  expect_guide_sphere(
+      scene, r.seed,
+      [&](uint x, uint y, int g, int c) {
+        return r.aov_mean[3 * ((size_t(y) * r.width + x) * 3 + g) + c];
+      },
+      1e-5);
 }
 
 }  // namespace tr::test
