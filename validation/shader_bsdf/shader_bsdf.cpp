@@ -191,25 +191,38 @@ std::vector<uint32_t> compile_shader(const ShaderSource& source) {
       log);
   if (status != 0) {
     std::ifstream in(log);
-    std::string line, user_errors, all_errors;
-    const std::string own = "./" + include_name + ":";
+    std::string line, user_errors, wrapper_errors;
+    // glslang names an included file relative to the including one or to the working folder.
+    const std::string own[] = {(temp.path / include_name).string() + ":",
+                               "./" + include_name + ":"};
+    const std::string wrapper = (temp.path / "wrapper.comp").string() + ":";
     while (std::getline(in, line)) {
       if (line.compare(0, 7, "ERROR: ") != 0) continue;
       std::string message = line.substr(7);
-      if (message.compare(0, own.size(), own) == 0) {
-        user_errors += source.path + ":" + message.substr(own.size()) + "\n";
-      } else if (message.find(temp.path.string()) == std::string::npos &&
-                 message.find("compilation errors") == std::string::npos) {
-        all_errors += message + "\n";
+      bool mine = false;
+      for (const std::string& prefix : own) {
+        if (message.compare(0, prefix.size(), prefix) == 0) {
+          user_errors += source.path + ":" + message.substr(prefix.size()) + "\n";
+          mine = true;
+          break;
+        }
       }
+      if (mine || message.compare(0, wrapper.size(), wrapper) != 0) continue;
+      // "LINE: what" in the generated wrapper: a user_* function missing or of another signature.
+      std::string what = message.substr(message.find(':', wrapper.size()) + 1);
+      if (what.find("compilation terminated") != std::string::npos) continue;
+      wrapper_errors += source.path + ":1: (in the compute shader twinray wraps it in)" + what +
+                        " (are user_eval, user_sample and user_pdf defined with the signatures of "
+                        "validation/shader_bsdf/README.md?)\n";
     }
-    // Errors in the generated wrapper follow from the user's (or a missing user_* function).
-    std::string shown =
-        !user_errors.empty()
-            ? user_errors
-            : (all_errors.empty() ? "glslang failed with status " + std::to_string(status) + "\n"
-                                  : source.path + ":0: " + all_errors);
-    if (!shown.empty() && shown.back() == '\n') shown.pop_back();
+    // Errors in the wrapper follow from the user's, which are shown alone when there are any.
+    std::string shown = !user_errors.empty()      ? user_errors
+                        : !wrapper_errors.empty() ? wrapper_errors
+                                                  : source.path +
+                                                        ":1: glslangValidator failed "
+                                                        "with status " +
+                                                        std::to_string(status) + "\n";
+    shown.pop_back();
     throw ShaderCompileError(shown);
   }
   std::ifstream in(spv, std::ios::binary | std::ios::ate);

@@ -1,0 +1,46 @@
+#!/bin/bash
+# `twinray check-bsdf` on bad input (issue 16): a shader that does not compile exits 3 with
+# glslang's error as FILE:LINE, a malformed parameter declaration exits 3 with FILE:LINE, and
+# usage errors exit 2.
+#   check_bsdf_errors.sh TWINRAY EXAMPLES_DIR
+set -u
+twinray=$1
+examples=$2
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail=0
+expect() {  # expect STATUS REGEX ARGS...: exit status and a line of stderr+stdout
+  local status=$1 regex=$2
+  shift 2
+  "$twinray" check-bsdf "$@" >"$dir/out" 2>&1
+  local got=$?
+  if [ "$got" != "$status" ] || ! grep -Eq "$regex" "$dir/out"; then
+    echo "FAIL: check-bsdf $* exited $got (expected $status), output:"
+    cat "$dir/out"
+    fail=1
+  else
+    echo "ok: check-bsdf $* -> $got: $(grep -E "$regex" "$dir/out" | head -1)"
+  fi
+}
+# An undeclared identifier on line 10 of a copy of the Lambertian.
+sed '10s/return vec3(0.0);/return vec3(undeclared_value);/' "$examples/lambert.glsl" >"$dir/bad.glsl"
+sed -n 10p "$dir/bad.glsl" | grep -q undeclared_value || { echo "FAIL: line 10 not edited"; exit 1; }
+expect 3 "^$dir/bad.glsl:10: .*undeclared_value" "$dir/bad.glsl"
+# A syntax error on line 6.
+sed '6s/= 3.14159265358979;/= 3.14159 265358979;/' "$examples/lambert.glsl" >"$dir/syntax6.glsl"
+expect 3 "^$dir/syntax6.glsl:6: .*syntax error" "$dir/syntax6.glsl"
+# An unterminated declaration on the last line (glslang finds the error in the wrapper).
+{ cat "$examples/lambert.glsl"; echo "vec3 oops("; } >"$dir/syntax.glsl"
+expect 3 "^$dir/syntax.glsl:[0-9]+: " "$dir/syntax.glsl"
+# A file without user_pdf.
+grep -v 'float user_pdf' "$examples/lambert.glsl" | sed '/^\/\/ Cosine-weighted/,/^}/d' >"$dir/nopdf.glsl"
+expect 3 "user_pdf" "$dir/nopdf.glsl"
+# A malformed parameter declaration on line 2.
+printf '// x\n#pragma twinray_param albedo\n' >"$dir/pragma.glsl"
+expect 3 "^$dir/pragma.glsl:2: " "$dir/pragma.glsl"
+expect 3 "cannot read" "$dir/missing.glsl"
+expect 2 "no shader file" --samples 20000
+expect 2 "declares no such parameter" "$examples/lambert.glsl" --params roughness=0.5
+expect 2 "not a finite number" "$examples/lambert.glsl" --params albedo=x
+expect 2 "unknown option" "$examples/lambert.glsl" --frobnicate
+exit $fail
