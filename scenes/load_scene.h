@@ -21,9 +21,10 @@ struct LoadOptions {
   std::vector<GuideAov> guide_aovs;
 };
 
-// Parses and builds the scene, a Mitsuba 3 XML file or, by the extension `.scn`, a .scn JSON
-// scene (scenes/scn/), whose mapping warnings it prints on stderr once the scene is built;
-// throws SceneError("file:line: what and why") on bad input.
+// Parses and builds the scene: a Mitsuba 3 XML file or, by the extension, a `.scn` JSON scene
+// (scenes/scn/) or a glTF 2.0 scene (`.gltf`, `.glb`: scenes/gltf/), whose mapping warnings it
+// prints on stderr once the scene is built; throws SceneError("file:line: what and why") on bad
+// input.
 Scene load_scene(const std::string& path, const LoadOptions& options);
 
 }  // namespace tr
