@@ -1,7 +1,7 @@
 #!/bin/bash
-# `twinray check-bsdf` on bad input (issue 16): a shader that does not compile exits 3 with
-# glslang's error as FILE:LINE, a malformed parameter declaration exits 3 with FILE:LINE, and
-# usage errors exit 2.
+# `twinray check-bsdf` on bad input (issue 16): a shader (GLSL or HLSL) that does not compile
+# exits 3 with glslang's error as FILE:LINE, a malformed parameter declaration exits 3 with
+# FILE:LINE, usage errors exit 2, and a sample() that never succeeds fails (exit 1).
 #   check_bsdf_errors.sh TWINRAY EXAMPLES_DIR
 set -u
 twinray=$1
@@ -39,6 +39,14 @@ expect 3 "user_pdf" "$dir/nopdf.glsl"
 printf '// x\n#pragma twinray_param albedo\n' >"$dir/pragma.glsl"
 expect 3 "^$dir/pragma.glsl:2: " "$dir/pragma.glsl"
 expect 3 "cannot read" "$dir/missing.glsl"
+# HLSL: an undeclared identifier on line 11 of a copy of the HLSL Lambertian.
+sed '11s/return float3(0.0, 0.0, 0.0);/return undeclared_value;/' "$examples/lambert.hlsl" >"$dir/bad.hlsl"
+sed -n 11p "$dir/bad.hlsl" | grep -q undeclared_value || { echo "FAIL: line 11 not edited"; exit 1; }
+expect 3 "^$dir/bad.hlsl:11: .*undeclared_value" "$dir/bad.hlsl"
+# A sample() whose every draw fails passes validation/bsdf's checks; the "draws" check fails it.
+sed 's/^  pdf = wo.z \/ USER_PI;/  pdf = 0.0;/' "$examples/lambert.glsl" >"$dir/never.glsl"
+grep -q '^  pdf = 0.0;$' "$dir/never.glsl" || { echo "FAIL: never.glsl not edited"; exit 1; }
+expect 1 "^FAILED draws .*theta_i=89.9 .*0 of 1024" "$dir/never.glsl" --samples 20000
 expect 2 "no shader file" --samples 20000
 expect 2 "declares no such parameter" "$examples/lambert.glsl" --params roughness=0.5
 expect 2 "not a finite number" "$examples/lambert.glsl" --params albedo=x

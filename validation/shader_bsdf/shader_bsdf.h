@@ -35,6 +35,7 @@ struct ShaderSource {
   std::string path;
   std::string text;
   std::vector<ShaderParameter> parameters;  // in declaration order
+  bool hlsl = false;                        // FILE.hlsl: glslang's HLSL front end
 };
 ShaderSource read_shader_source(const std::string& path);
 

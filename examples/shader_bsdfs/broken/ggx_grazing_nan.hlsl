@@ -1,0 +1,76 @@
+// HLSL copy of ggx_grazing_nan.glsl (checked through glslang's HLSL front end).
+// BROKEN on purpose (examples/shader_bsdfs/ggx_conductor.glsl with a bug): user_eval divides by
+// cos theta_o and multiplies it back, and its horizon test lets wo.z = 0 through, so a grazing
+// wo gives 0 / 0 = NaN; the extremes check fails.
+#pragma twinray_param alpha 0.3
+#pragma twinray_param f0 0.9
+
+static const float USER_PI = 3.14159265358979;
+
+// D(m) = 1 / (pi a^2 ((mx^2 + my^2) / a^2 + mz^2)^2) (Walter et al. 2007, eq. 33).
+float ggx_d(float3 m, float a) {
+  float t = (m.x * m.x + m.y * m.y) / (a * a) + m.z * m.z;
+  return 1.0 / (USER_PI * a * a * t * t);
+}
+
+// Smith's Lambda for GGX (Heitz 2014, "Understanding the masking-shadowing function", eq. 72).
+float ggx_lambda(float3 v, float a) {
+  float t2 = a * a * (v.x * v.x + v.y * v.y) / (v.z * v.z);
+  return 0.5 * (-1.0 + sqrt(1.0 + t2));
+}
+
+float schlick(float cos_theta, float f0) {
+  float c = 1.0 - clamp(cos_theta, 0.0, 1.0);
+  return f0 + (1.0 - f0) * c * c * c * c * c;
+}
+
+// Heitz 2018, Listing 1: a normal from D_wi(m) = G1(wi) max(0, wi.m) D(m) / cos theta_i.
+float3 sample_vndf(float3 wi, float a, float2 u) {
+  float3 vh = normalize(float3(a * wi.x, a * wi.y, wi.z));
+  float lensq = vh.x * vh.x + vh.y * vh.y;
+  float3 t1 = lensq > 0.0 ? float3(-vh.y, vh.x, 0.0) * rsqrt(lensq) : float3(1.0, 0.0, 0.0);
+  float3 t2 = cross(vh, t1);
+  float r = sqrt(u.x);
+  float phi = 2.0 * USER_PI * u.y;
+  float p1 = r * cos(phi);
+  float p2 = r * sin(phi);
+  float s = 0.5 * (1.0 + vh.z);
+  p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
+  float3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
+  return normalize(float3(a * nh.x, a * nh.y, max(1e-7, nh.z)));
+}
+
+// f = F D G2 / (4 cos theta_i cos theta_o), times cos theta_o.
+float3 user_eval(float3 wi, float3 wo, UserParams p) {
+  if (wi.z <= 0.0 || wo.z < 0.0) return float3(0.0, 0.0, 0.0);
+  float3 m = normalize(wi + wo);
+  float g2 = 1.0 / (1.0 + ggx_lambda(wi, p.alpha) + ggx_lambda(wo, p.alpha));
+  float f = schlick(dot(wi, m), p.f0) * ggx_d(m, p.alpha) * g2 / (4.0 * wi.z * wo.z);
+  return (float3)(f * wo.z);
+}
+
+// D_wi(m) / (4 wi.m) = G1(wi) D(m) / (4 cos theta_i) (the reflection's Jacobian, Walter 2007).
+float user_pdf(float3 wi, float3 wo, UserParams p) {
+  if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+  float3 m = normalize(wi + wo);
+  float g1 = 1.0 / (1.0 + ggx_lambda(wi, p.alpha));
+  return g1 * ggx_d(m, p.alpha) / (4.0 * wi.z);
+}
+
+float3 user_sample(float3 wi, float3 u, UserParams p, out float3 wo, out float pdf) {
+  wo = float3(0.0, 0.0, 1.0);
+  pdf = 0.0;
+  if (wi.z <= 0.0) return float3(0.0, 0.0, 0.0);
+  float3 m = sample_vndf(wi, p.alpha, u.yz);
+  wo = reflect(-wi, m);
+  if (wo.z <= 0.0) return float3(0.0, 0.0, 0.0);  // reflected below the horizon: a failed draw
+  pdf = user_pdf(wi, wo, p);
+  if (!(pdf > 0.0)) {
+    pdf = 0.0;
+    return float3(0.0, 0.0, 0.0);
+  }
+  float lambda_i = ggx_lambda(wi, p.alpha);
+  float g1 = 1.0 / (1.0 + lambda_i);
+  float g2 = 1.0 / (1.0 + lambda_i + ggx_lambda(wo, p.alpha));
+  return (float3)(schlick(dot(wi, m), p.f0) * g2 / g1);  // eval / pdf
+}
