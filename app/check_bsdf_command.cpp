@@ -22,12 +22,12 @@ namespace {
 namespace validation = twinray::validation;
 
 const char* kUsage =
-    "usage: twinray check-bsdf FILE.glsl [options]\n"
-    "  Validates a BSDF written in GLSL (user_eval, user_sample, user_pdf; see\n"
+    "usage: twinray check-bsdf FILE.glsl|FILE.hlsl [options]\n"
+    "  Validates a BSDF written in GLSL or HLSL (user_eval, user_sample, user_pdf; see\n"
     "  validation/shader_bsdf/README.md) on a Vulkan device: chi-square of sample() against\n"
     "  pdf() at theta_i = 0, 30, 60, 85, 89.9 degrees, consistency (weight = eval/pdf,\n"
     "  pdf(sampled) = sampled pdf, eval > 0 => pdf > 0, reciprocity), albedo <= 1, and NaN/Inf/\n"
-    "  negative values at extreme directions.\n"
+    "  negative values at extreme directions, and that sample() succeeds at all.\n"
     "options:\n"
     "  --params k=v[/v...],...  parameter values (declared in the file with\n"
     "                           '#pragma twinray_param NAME DEFAULT'); several values per\n"

@@ -27,7 +27,7 @@ const char* kUsage =
     "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
     "  conformance FOLDER [opts]    load and render every scene of a folder, sort the outcomes\n"
     "  convert SCENE.scn -o OUT.xml write a .scn scene as Mitsuba 3 XML (twinray convert --help)\n"
-    "  check-bsdf FILE.glsl [opts]  chi-square/consistency/extremes suites on a GLSL BSDF (--help)\n"
+    "  check-bsdf FILE.glsl [opts]  chi-square/consistency/extremes suites on a GLSL/HLSL BSDF\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
     "             5 output not writable, 6 internal error, 7 render interrupted (outputs hold\n"
     "             the samples so far), 8 checkpoint damaged or of another render\n";
