@@ -1,7 +1,8 @@
 #!/bin/bash
 # `twinray check-bsdf` on bad input (issue 16): a shader (GLSL or HLSL) that does not compile
 # exits 3 with glslang's error as FILE:LINE, a malformed parameter declaration exits 3 with
-# FILE:LINE, usage errors exit 2, and a sample() that never succeeds fails (exit 1).
+# FILE:LINE, usage errors exit 2, an unknown device 4, an unwritable JSON report 5, and a
+# sample() that never succeeds fails (exit 1).
 #   check_bsdf_errors.sh TWINRAY EXAMPLES_DIR
 set -u
 twinray=$1
@@ -51,4 +52,6 @@ expect 2 "no shader file" --samples 20000
 expect 2 "declares no such parameter" "$examples/lambert.glsl" --params roughness=0.5
 expect 2 "not a finite number" "$examples/lambert.glsl" --params albedo=x
 expect 2 "unknown option" "$examples/lambert.glsl" --frobnicate
+expect 4 "no-such-device" "$examples/lambert.glsl" --device no-such-device
+expect 5 "cannot write" "$examples/lambert.glsl" --samples 1000 --json "$dir/no/such/folder.json"
 exit $fail
