@@ -236,7 +236,10 @@ std::vector<uint32_t> compile_shader(const ShaderSource& source) {
   const fs::path spv = temp.path / "wrapper.spv";
   const fs::path log = temp.path / "glslang.log";
   const fs::path user_dir = fs::absolute(source.path).parent_path();
-  std::vector<std::string> args = {glslang_path(), "-V", "--target-env", "vulkan1.2"};
+  // SPIR-V 1.5 (vulkan1.2) for GLSL, as tests/bsdf_gpu. glslang 12's HLSL front end decorates
+  // structured buffers BufferBlock, which SPIR-V allows up to 1.3 only: HLSL gets vulkan1.1.
+  std::vector<std::string> args = {glslang_path(), "-V", "--target-env",
+                                   source.hlsl ? "vulkan1.1" : "vulkan1.2"};
   if (source.hlsl) args.insert(args.end(), {"-D", "-S", "comp", "-e", "main"});
   args.insert(args.end(), {"-I" + temp.path.string(), "-I" + user_dir.string(), "-o", spv.string(),
                            (temp.path / "wrapper.comp").string()});
