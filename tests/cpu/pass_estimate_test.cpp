@@ -30,8 +30,8 @@ Scene cornell_box(uint sampler, uint requested, int max_depth = 0) {
   LoadOptions load;
   load.defines = {{"width", "16"}, {"height", "16"}};
   if (max_depth > 0) load.defines["max_depth"] = std::to_string(max_depth);
-  Scene scene =
-      load_scene(std::string(TWINRAY_SOURCE_DIR) + "/examples/scenes/cornell-box/cornell_box.xml", load);
+  Scene scene = load_scene(
+      std::string(TWINRAY_SOURCE_DIR) + "/examples/scenes/cornell-box/cornell_box.xml", load);
   set_sampler(scene, sampler, requested, true);
   return scene;
 }

@@ -21,8 +21,8 @@ namespace {
 Scene cornell_box(uint sampler, uint requested) {
   LoadOptions load;
   load.defines = {{"width", "8"}, {"height", "8"}, {"max_depth", "3"}};
-  Scene scene =
-      load_scene(std::string(TWINRAY_SOURCE_DIR) + "/examples/scenes/cornell-box/cornell_box.xml", load);
+  Scene scene = load_scene(
+      std::string(TWINRAY_SOURCE_DIR) + "/examples/scenes/cornell-box/cornell_box.xml", load);
   set_sampler(scene, sampler, requested, true);
   return scene;
 }

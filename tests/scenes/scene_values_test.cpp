@@ -518,7 +518,8 @@ TEST(SceneValues, CornellBoxLoads) {
   LoadOptions o;
   o.defines["width"] = "64";
   o.defines["spp"] = "8";
-  Scene s = load_scene(std::string(TWINRAY_SOURCE_DIR) + "/examples/scenes/cornell-box/cornell_box.xml", o);
+  Scene s = load_scene(
+      std::string(TWINRAY_SOURCE_DIR) + "/examples/scenes/cornell-box/cornell_box.xml", o);
   EXPECT_EQ(s.buffers.globals.camera.width, 64u);
   EXPECT_EQ(s.buffers.globals.camera.height, 512u);
   EXPECT_EQ(s.spp, 8u);
