@@ -11,6 +11,7 @@
 // may be rounding-sensitive); the systematic and cluster checks stay as for every scene.
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 
 #include "lockstep_check.h"
@@ -26,6 +27,9 @@ struct Bundled {
   const char* height;
   bool ill_conditioned;
 };
+
+// gtest prints a test's parameter; by its name, not its bytes.
+void PrintTo(const Bundled& b, std::ostream* os) { *os << b.name; }
 
 class BundledLockstep : public testing::TestWithParam<Bundled> {};
 
