@@ -95,6 +95,10 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
         {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, spirv_shape, sizeof(spirv_shape)},
         {VK_SHADER_STAGE_ANY_HIT_BIT_KHR, spirv_alpha, sizeof(spirv_alpha)},
     };
+    // The any-hit stage only where the scene alpha-tests (lavapipe compiles a slower
+    // traversal for a pipeline that has one).
+    const bool alpha_tested = (features.material_flags & MATERIAL_ALPHA_TESTED) != 0;
+    const uint32_t stage_count = alpha_tested ? 6u : 5u;
     // One uint per constant_id, in SceneFeatures order.
     const uint32_t kConstants = sizeof(SceneFeatures) / sizeof(uint32_t);
     VkSpecializationMapEntry entries[kConstants];
@@ -102,7 +106,8 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
       entries[i] = {i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
     VkSpecializationInfo specialization{kConstants, entries, sizeof(SceneFeatures), &features};
     std::vector<VkPipelineShaderStageCreateInfo> stage_infos;
-    for (const Stage& s : stages) {
+    for (uint32_t i = 0; i < stage_count; ++i) {
+      const Stage& s = stages[i];
       modules.push_back(make_module(d, s.code, s.bytes));
       VkPipelineShaderStageCreateInfo info{};
       info.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -118,7 +123,8 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, U, U, U),
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 2, U, U, U),
         // Any-hit runs only on non-opaque (alpha-tested) triangle geometries.
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, 3, 5, U),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, 3, alpha_tested ? 5 : U,
+              U),
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, 3, U, 4),
     };
     VkRayTracingPipelineCreateInfoKHR info{};

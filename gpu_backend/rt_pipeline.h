@@ -1,7 +1,8 @@
 // The ray-tracing pipeline and its shader binding table.
 //   groups: 0 raygen | 1 miss (closest query) | 2 miss (occlusion query)
-//           3 triangle hit group (closest hit) | 4 procedural hit group (intersection +
-//           closest hit), matching HIT_GROUP_TRIANGLES / HIT_GROUP_PROCEDURAL.
+//           3 triangle hit group (closest hit; any-hit shaders/alpha.rahit only in a scene
+//           that alpha-tests) | 4 procedural hit group (intersection + closest hit), matching
+//           HIT_GROUP_TRIANGLES / HIT_GROUP_PROCEDURAL.
 // Set 0 holds the bindings of core/bindings.h; the push constants are a BatchParams; every
 // stage is specialized with the scene's feature masks (shaders/features.glsl).
 #pragma once

@@ -220,6 +220,11 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
     vi.mask = 0xff;
     vi.instanceShaderBindingTableRecordOffset =
         layout.blases[b].procedural ? HIT_GROUP_PROCEDURAL : HIT_GROUP_TRIANGLES;
+    bool alpha_tested = false;
+    for (uint32_t s : layout.blases[b].shapes)
+      alpha_tested |=
+          (scene.materials[scene.shapes[s].material].flags & MATERIAL_ALPHA_TESTED) != 0;
+    vi.flags = alpha_tested ? 0 : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
     vi.accelerationStructureReference = blases_[b]->address();
     instances.push_back(vi);
   }

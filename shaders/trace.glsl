@@ -17,15 +17,18 @@ layout(location = 0) rayPayloadEXT Hit g_hit;
 layout(location = 1) rayPayloadEXT uint g_unoccluded;
 
 // The SBT record stride is 0: every geometry of a TLAS instance uses the instance's hit group.
+// Rays are opaque unless the scene alpha-tests (a specialization constant: the flag folds).
+const uint TRACE_FLAGS = TR_HAS_MATERIAL_FLAG(MATERIAL_ALPHA_TESTED) ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
+
 Hit trace_closest(Ray r) {
-  traceRayEXT(g_tlas, gl_RayFlagsNoneEXT, 0xff, 0, 0, 0, r.o, r.tmin, r.d, r.tmax, 0);
+  traceRayEXT(g_tlas, TRACE_FLAGS, 0xff, 0, 0, 0, r.o, r.tmin, r.d, r.tmax, 0);
   return g_hit;
 }
 
 bool trace_unoccluded(Ray r) {
   g_unoccluded = 0u;
   traceRayEXT(g_tlas,
-              gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT,
+              TRACE_FLAGS | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT,
               0xff, 0, 0, 1, r.o, r.tmin, r.d, r.tmax, 1);
   return g_unoccluded != 0u;
 }
