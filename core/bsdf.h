@@ -170,10 +170,30 @@ INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, v
   return bsdf_sample_failed();
 }
 
-// Mask opacity, clipped to [0, 1] as Mitsuba's MaskBSDF::eval_opacity.
-INLINE float bsdf_opacity(Material m, TexCoord uv) {
+// A leaf material with its textured parameters (and mask opacity) evaluated at uv; the BSDFs of
+// core/bsdf/ read them as constants. GLSL inlines every call, so one lookup in a loop here
+// instead of one per parameter read keeps a single copy of the texture code per leaf call. The
+// roughplastic table slot holds a texture of its own, not a parameter, and is left as it is;
+// flags are taken from the unevaluated material (a textured spec_trans transmits everywhere).
+INLINE Material material_at(Material m, TexCoord uv) {
+  for (uint k = 0u; k <= MATERIAL_PARAM_COUNT; ++k) {
+    bool opacity = k == MATERIAL_PARAM_COUNT;
+    if (!opacity && m.type == BSDF_ROUGHPLASTIC && k == ROUGHPLASTIC_TABLE) continue;
+    TexturedValue v = opacity ? m.opacity : m.param[k];
+    v.value = eval_textured(v, uv);
+    v.texture = NO_INDEX;
+    if (opacity)
+      m.opacity = v;
+    else
+      m.param[k] = v;
+  }
+  return m;
+}
+
+// Mask opacity of a material_at, clipped to [0, 1] as Mitsuba's MaskBSDF::eval_opacity.
+INLINE float bsdf_opacity(Material m) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
-    return clamp(eval_textured_1(m.opacity, uv), 0.0f, 1.0f);
+    return clamp(m.opacity.value.x, 0.0f, 1.0f);
   return 1.0f;
 }
 
@@ -185,23 +205,26 @@ INLINE uint bsdf_leaf_flags(Material m, TexCoord uv) {
 }
 
 INLINE vec3 bsdf_leaf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+  m = material_at(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
   }
-  return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m, uv);
+  return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m);
 }
 
 INLINE float bsdf_leaf_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+  m = material_at(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
   }
-  return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m, uv);
+  return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m);
 }
 
 INLINE BsdfSample bsdf_leaf_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
-  float opacity = bsdf_opacity(m, uv);
+  m = material_at(m, uv);
+  float opacity = bsdf_opacity(m);
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
   float wi_z = wi.z;
@@ -221,19 +244,20 @@ INLINE BsdfSample bsdf_leaf_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // nested BSDF's (mask.cpp), without its opacity. The wrappers above a leaf:
 // bsdf_diffuse_reflectance.
 INLINE vec3 bsdf_leaf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
+  m = material_at(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
     wi.z = abs(wi.z);
   switch (m.type) {
     case BSDF_DIFFUSE:
-      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return eval_textured(m.param[DIFFUSE_REFLECTANCE], uv);
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return m.param[DIFFUSE_REFLECTANCE].value;
       break;
     case BSDF_PLASTIC:
     case BSDF_ROUGHPLASTIC:
       if (TR_HAS_BSDF(BSDF_PLASTIC) || TR_HAS_BSDF(BSDF_ROUGHPLASTIC))
-        return eval_textured(m.param[PLASTIC_DIFFUSE_REFLECTANCE], uv);
+        return m.param[PLASTIC_DIFFUSE_REFLECTANCE].value;
       break;
     case BSDF_PRINCIPLED:
-      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return eval_textured(m.param[PRINCIPLED_BASE_COLOR], uv);
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return m.param[PRINCIPLED_BASE_COLOR].value;
       break;
     default:
       break;

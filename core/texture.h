@@ -23,9 +23,9 @@ INLINE int texture_mod(int i, int n) {
 // the edge texel.
 INLINE int texture_wrap(int i, int n, uint mode) {
   if (mode == WRAP_CLAMP) return clamp(i, 0, n - 1);
-  if (mode == WRAP_REPEAT) return texture_mod(i, n);
-  int m = texture_mod(i, 2 * n);
-  return m < n ? m : 2 * n - 1 - m;
+  bool mirror = mode != WRAP_REPEAT;
+  int m = texture_mod(i, mirror ? 2 * n : n);
+  return mirror && m >= n ? 2 * n - 1 - m : m;
 }
 
 // Where a texture is evaluated: the surface's uv and, on a mesh, the shape, the triangle and
@@ -50,14 +50,39 @@ INLINE TexCoord tex_coord_mesh(vec2 uv, uint shape, uint primitive, vec2 barycen
 INLINE TexCoord tex_coord(vec2 uv) { return tex_coord_mesh(uv, NO_INDEX, 0u, vec2(0.0f)); }
 
 INLINE vec3 texture_texel(Texture t, int i, int j) {
-  int x = texture_wrap(i, int(t.width), t.wrap_mode);
-  int y = texture_wrap(j, int(t.height), t.wrap_mode);
-  return vec3(scene_texel(t.texel_offset + uint(y) * t.width + uint(x)));
+  ivec2 size = ivec2(int(t.width), int(t.height));
+  ivec2 p = ivec2(i, j);
+  // One wrap per axis in a loop: every lookup of every textured parameter is inlined into the
+  // shader, so the lookup is kept to one call site of each helper.
+  for (int a = 0; a < 2; ++a) p[a] = texture_wrap(p[a], size[a], t.wrap_mode);
+  return vec3(scene_texel(t.texel_offset + uint(p.y) * t.width + uint(p.x)));
 }
 
 INLINE vec2 texture_apply_to_uv(Texture t, vec2 uv) {
   vec3 h = vec3(uv.x, uv.y, 1.0f);
   return vec2(dot(vec3(t.to_uv[0]), h), dot(vec3(t.to_uv[1]), h));
+}
+
+// The texels a lookup at st reads: with bilinear filtering the four around pos = st * resolution
+// - 0.5, v[0] = (i, j), v[1] = (i + 1, j), v[2] = (i, j + 1), v[3] = (i + 1, j + 1) for
+// (i, j) = floor(pos), and the weights w1 = pos - (i, j) of the second ones; with nearest
+// filtering v[0] alone, at floor(st * resolution).
+struct TexelQuad {
+  vec3 v[4];
+  vec2 w1;
+};
+
+INLINE TexelQuad texture_texels(Texture t, vec2 st) {
+  bool nearest = t.filter_mode == FILTER_NEAREST;
+  vec2 res = vec2(float(t.width), float(t.height));
+  vec2 pos = nearest ? st * res : st * res - vec2(0.5f);
+  vec2 p0 = floor(pos);
+  TexelQuad q;
+  q.w1 = pos - p0;
+  int count = nearest ? 1 : 4;
+  for (int k = 0; k < count; ++k)
+    q.v[k] = texture_texel(t, int(p0.x) + (k & 1), int(p0.y) + (k >> 1));
+  return q;
 }
 
 INLINE vec3 eval_texture(uint texture, vec2 uv) {
@@ -69,31 +94,19 @@ INLINE vec3 eval_texture(uint texture, vec2 uv) {
     bool my = st.y - floor(st.y) > 0.5f;
     return mx == my ? vec3(t.color0) : vec3(t.color1);
   }
-  vec2 res = vec2(float(t.width), float(t.height));
-  if (t.filter_mode == FILTER_NEAREST) {
-    vec2 p = floor(st * res);
-    return texture_texel(t, int(p.x), int(p.y));
-  }
-  vec2 pos = st * res - vec2(0.5f);
-  vec2 p0 = floor(pos);
-  vec2 w1 = pos - p0;
-  vec2 w0 = vec2(1.0f) - w1;
-  int i = int(p0.x);
-  int j = int(p0.y);
-  vec3 v00 = texture_texel(t, i, j);
-  vec3 v10 = texture_texel(t, i + 1, j);
-  vec3 v01 = texture_texel(t, i, j + 1);
-  vec3 v11 = texture_texel(t, i + 1, j + 1);
-  return w0.y * (w0.x * v00 + w1.x * v10) + w1.y * (w0.x * v01 + w1.x * v11);
+  TexelQuad q = texture_texels(t, st);
+  if (t.filter_mode == FILTER_NEAREST) return q.v[0];
+  vec2 w0 = vec2(1.0f) - q.w1;
+  return w0.y * (w0.x * q.v[0] + q.w1.x * q.v[1]) + q.w1.y * (w0.x * q.v[2] + q.w1.x * q.v[3]);
 }
 
 // Value i of a mesh attribute of `dim` (1 or 3) values per element starting at `offset` in the
 // attribute buffer; a single channel is broadcast, as Mitsuba's eval turns it into a spectrum.
 INLINE vec3 mesh_attribute_value(uint offset, uint dim, uint i) {
   uint first = offset + dim * i;
-  if (dim == 1u) return vec3(uintBitsToFloat(scene_attribute(first)));
-  return vec3(uintBitsToFloat(scene_attribute(first)), uintBitsToFloat(scene_attribute(first + 1u)),
-              uintBitsToFloat(scene_attribute(first + 2u)));
+  vec3 v;
+  for (uint k = 0u; k < 3u; ++k) v[k] = uintBitsToFloat(scene_attribute(first + min(k, dim - 1u)));
+  return v;
 }
 
 // Mitsuba `mesh_attribute` (src/textures/mesh_attribute.cpp; Mesh::interpolate_attribute in
@@ -107,18 +120,14 @@ INLINE vec3 eval_mesh_attribute(Texture t, TexCoord c) {
   uint entry = s.attribute_table + 2u * t.attribute_slot;
   uint offset = scene_attribute(entry);
   uint dim = scene_attribute(entry + 1u);
-  vec3 value;
-  if (t.attribute_per_face != 0u) {
-    value = mesh_attribute_value(offset, dim, c.primitive);
-  } else {
-    uint base = s.first_index + 3u * c.primitive;
-    vec3 v0 = mesh_attribute_value(offset, dim, scene_index(base));
-    vec3 v1 = mesh_attribute_value(offset, dim, scene_index(base + 1u));
-    vec3 v2 = mesh_attribute_value(offset, dim, scene_index(base + 2u));
-    float b1 = c.barycentrics.x;
-    float b2 = c.barycentrics.y;
-    value = v0 * (1.0f - b1 - b2) + (v1 * b1 + v2 * b2);
-  }
+  bool per_face = t.attribute_per_face != 0u;
+  uint base = s.first_index + 3u * c.primitive;
+  vec3 v[3];
+  for (uint k = 0u; k < (per_face ? 1u : 3u); ++k)
+    v[k] = mesh_attribute_value(offset, dim, per_face ? c.primitive : scene_index(base + k));
+  float b1 = c.barycentrics.x;
+  float b2 = c.barycentrics.y;
+  vec3 value = per_face ? v[0] : v[0] * (1.0f - b1 - b2) + (v[1] * b1 + v[2] * b2);
   return value * t.color0.x;
 }
 
@@ -144,16 +153,13 @@ INLINE vec2 eval_texture_1_grad(uint texture, vec2 uv) {
   Texture t = scene_texture(texture);
   if (t.filter_mode == FILTER_NEAREST) return vec2(0.0f);
   vec2 res = vec2(float(t.width), float(t.height));
-  vec2 pos = texture_apply_to_uv(t, uv) * res - vec2(0.5f);
-  vec2 p0 = floor(pos);
-  vec2 w1 = pos - p0;
+  TexelQuad q = texture_texels(t, texture_apply_to_uv(t, uv));
+  vec2 w1 = q.w1;
   vec2 w0 = vec2(1.0f) - w1;
-  int i = int(p0.x);
-  int j = int(p0.y);
-  float f00 = texture_texel(t, i, j).x;
-  float f10 = texture_texel(t, i + 1, j).x;
-  float f01 = texture_texel(t, i, j + 1).x;
-  float f11 = texture_texel(t, i + 1, j + 1).x;
+  float f00 = q.v[0].x;
+  float f10 = q.v[1].x;
+  float f01 = q.v[2].x;
+  float f11 = q.v[3].x;
   vec2 df_xy =
       vec2(w0.y * (f10 - f00) + w1.y * (f11 - f01), w0.x * (f01 - f00) + w1.x * (f11 - f10));
   vec2 df_uv = vec2(t.to_uv[0].x * df_xy.x + t.to_uv[1].x * df_xy.y,

@@ -1,7 +1,9 @@
 // Vocabulary shared by every BSDF in core/bsdf/: lobe flags, the sample record, and the
 // conventions of the interface in core/bsdf.h. Directions are in the local shading frame
 // (+z = shading normal); wi points toward the previous path vertex (Mitsuba's si.wi), wo
-// toward the next one. Radiance transport only (Mitsuba's TransportMode::Radiance).
+// toward the next one. Radiance transport only (Mitsuba's TransportMode::Radiance). The BSDFs
+// of a leaf read their textured parameters as constants (`param[k].value`, the first channel of
+// a scalar one): core/bsdf.h evaluates them at the shading point first (material_at).
 #ifndef TWINRAY_CORE_BSDF_COMMON_H
 #define TWINRAY_CORE_BSDF_COMMON_H
 

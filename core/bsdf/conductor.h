@@ -14,9 +14,8 @@ TR_NAMESPACE_BEGIN
 INLINE uint conductor_flags(Material m, TexCoord uv) { return BSDF_DELTA_REFLECTION; }
 
 INLINE vec3 conductor_fresnel(Material m, TexCoord uv, float cos_theta_i) {
-  return fresnel_conductor(cos_theta_i, eval_textured(m.param[CONDUCTOR_ETA], uv),
-                           eval_textured(m.param[CONDUCTOR_K], uv)) *
-         eval_textured(m.param[CONDUCTOR_SPECULAR_REFLECTANCE], uv);
+  return fresnel_conductor(cos_theta_i, m.param[CONDUCTOR_ETA].value, m.param[CONDUCTOR_K].value) *
+         m.param[CONDUCTOR_SPECULAR_REFLECTANCE].value;
 }
 
 INLINE BsdfSample conductor_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {

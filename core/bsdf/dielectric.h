@@ -22,11 +22,10 @@ INLINE BsdfSample dielectric_sample(Material m, TexCoord uv, vec3 wi, float u1, 
   float eta_ti;
   float r = fresnel_dielectric(wi.z, m.eta, cos_theta_t, eta_it, eta_ti);
   if (u1 <= r) {
-    return bsdf_sample_make(reflect_local(wi), r,
-                            eval_textured(m.param[DIELECTRIC_SPECULAR_REFLECTANCE], uv), 1.0f,
-                            BSDF_DELTA_REFLECTION);
+    return bsdf_sample_make(reflect_local(wi), r, m.param[DIELECTRIC_SPECULAR_REFLECTANCE].value,
+                            1.0f, BSDF_DELTA_REFLECTION);
   }
-  vec3 weight = eval_textured(m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE], uv) * (eta_ti * eta_ti);
+  vec3 weight = m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE].value * (eta_ti * eta_ti);
   return bsdf_sample_make(refract_local(wi, cos_theta_t, eta_ti), 1.0f - r, weight, eta_it,
                           BSDF_DELTA_TRANSMISSION);
 }

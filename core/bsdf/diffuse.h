@@ -13,7 +13,7 @@ INLINE uint diffuse_flags(Material m, TexCoord uv) { return BSDF_DIFFUSE_REFLECT
 
 INLINE vec3 diffuse_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
-  return eval_textured(m.param[DIFFUSE_REFLECTANCE], uv) * (INV_PI * wo.z);
+  return m.param[DIFFUSE_REFLECTANCE].value * (INV_PI * wo.z);
 }
 
 INLINE float diffuse_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
@@ -27,7 +27,7 @@ INLINE BsdfSample diffuse_sample(Material m, TexCoord uv, vec3 wi, float u1, vec
   float pdf = square_to_cosine_hemisphere_pdf(wo);
   if (pdf <= 0.0f) return bsdf_sample_failed();
   // f cos / pdf = (reflectance / pi) cos / (cos / pi) = reflectance.
-  return bsdf_sample_make(wo, pdf, eval_textured(m.param[DIFFUSE_REFLECTANCE], uv), 1.0f,
+  return bsdf_sample_make(wo, pdf, m.param[DIFFUSE_REFLECTANCE].value, 1.0f,
                           BSDF_DIFFUSE_REFLECTION);
 }
 

@@ -36,7 +36,7 @@ INLINE float plastic_specular_probability(float reflectance, float specular_weig
 
 // The diffuse base after internal reflections: R_d / (1 - F_dr R'), R' = R_d if nonlinear.
 INLINE vec3 plastic_diffuse_albedo(Material m, TexCoord uv, float internal_reflectance) {
-  vec3 diff = eval_textured(m.param[PLASTIC_DIFFUSE_REFLECTANCE], uv);
+  vec3 diff = m.param[PLASTIC_DIFFUSE_REFLECTANCE].value;
   vec3 denom = (m.flags & MATERIAL_NONLINEAR) != 0u ? vec3(1.0f) - diff * internal_reflectance
                                                     : vec3(1.0f - internal_reflectance);
   return diff / denom;
@@ -63,7 +63,7 @@ INLINE BsdfSample plastic_sample(Material m, TexCoord uv, vec3 wi, float u1, vec
   float f_i = fresnel_dielectric_reflectance(wi.z, m.eta);
   float p_specular = plastic_specular_probability(f_i, m.extra);
   if (u1 < p_specular) {
-    vec3 weight = eval_textured(m.param[PLASTIC_SPECULAR_REFLECTANCE], uv) * (f_i / p_specular);
+    vec3 weight = m.param[PLASTIC_SPECULAR_REFLECTANCE].value * (f_i / p_specular);
     return bsdf_sample_make(reflect_local(wi), p_specular, weight, 1.0f, BSDF_DELTA_REFLECTION);
   }
   vec3 wo = square_to_cosine_hemisphere(u2);

@@ -26,22 +26,22 @@ INLINE uint pplastic_flags(Material m, TexCoord uv) {
 }
 
 INLINE Microfacet pplastic_distribution(Material m, TexCoord uv) {
-  return microfacet_make(
-      (m.flags & MATERIAL_BECKMANN) != 0u, eval_textured_1(m.param[PPLASTIC_ALPHA_U], uv),
-      eval_textured_1(m.param[PPLASTIC_ALPHA_V], uv), (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
+  return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, m.param[PPLASTIC_ALPHA_U].value.x,
+                         m.param[PPLASTIC_ALPHA_V].value.x,
+                         (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
 INLINE vec3 pplastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
-  float eta = eval_textured_1(m.param[PPLASTIC_ETA], uv);
+  float eta = m.param[PPLASTIC_ETA].value.x;
   Microfacet d = pplastic_distribution(m, uv);
   vec3 h = normalize(wo + wi);
   float specular = fresnel_dielectric_reflectance(dot(wi, h), eta) * microfacet_d(d, h) *
                    microfacet_g(d, wi, wo, h) / (4.0f * wi.z);
   float transmitted = (1.0f - fresnel_dielectric_reflectance(wi.z, eta)) *
                       (1.0f - fresnel_dielectric_reflectance(wo.z, eta));
-  return eval_textured(m.param[PLASTIC_SPECULAR_REFLECTANCE], uv) * specular +
-         eval_textured(m.param[PLASTIC_DIFFUSE_REFLECTANCE], uv) * (transmitted * INV_PI * wo.z);
+  return m.param[PLASTIC_SPECULAR_REFLECTANCE].value * specular +
+         m.param[PLASTIC_DIFFUSE_REFLECTANCE].value * (transmitted * INV_PI * wo.z);
 }
 
 INLINE float pplastic_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {

@@ -48,17 +48,17 @@ struct PrincipledParams {
 
 INLINE PrincipledParams principled_params(Material m, TexCoord uv) {
   PrincipledParams p;
-  p.base_color = eval_textured(m.param[PRINCIPLED_BASE_COLOR], uv);
-  p.roughness = eval_textured_1(m.param[PRINCIPLED_ROUGHNESS], uv);
-  p.metallic = eval_textured_1(m.param[PRINCIPLED_METALLIC], uv);
-  p.spec_tint = eval_textured_1(m.param[PRINCIPLED_SPEC_TINT], uv);
-  p.anisotropic = eval_textured_1(m.param[PRINCIPLED_ANISOTROPIC], uv);
-  p.sheen = eval_textured_1(m.param[PRINCIPLED_SHEEN], uv);
-  p.sheen_tint = eval_textured_1(m.param[PRINCIPLED_SHEEN_TINT], uv);
-  p.clearcoat = eval_textured_1(m.param[PRINCIPLED_CLEARCOAT], uv);
-  p.clearcoat_gloss = eval_textured_1(m.param[PRINCIPLED_CLEARCOAT_GLOSS], uv);
-  p.spec_trans = eval_textured_1(m.param[PRINCIPLED_SPEC_TRANS], uv);
-  p.flatness = eval_textured_1(m.param[PRINCIPLED_FLATNESS], uv);
+  p.base_color = m.param[PRINCIPLED_BASE_COLOR].value;
+  p.roughness = m.param[PRINCIPLED_ROUGHNESS].value.x;
+  p.metallic = m.param[PRINCIPLED_METALLIC].value.x;
+  p.spec_tint = m.param[PRINCIPLED_SPEC_TINT].value.x;
+  p.anisotropic = m.param[PRINCIPLED_ANISOTROPIC].value.x;
+  p.sheen = m.param[PRINCIPLED_SHEEN].value.x;
+  p.sheen_tint = m.param[PRINCIPLED_SHEEN_TINT].value.x;
+  p.clearcoat = m.param[PRINCIPLED_CLEARCOAT].value.x;
+  p.clearcoat_gloss = m.param[PRINCIPLED_CLEARCOAT_GLOSS].value.x;
+  p.spec_trans = m.param[PRINCIPLED_SPEC_TRANS].value.x;
+  p.flatness = m.param[PRINCIPLED_FLATNESS].value.x;
   p.eta = m.eta;
   vec3 rates = m.param[PRINCIPLED_SAMPLING_RATES].value;
   p.diffuse_rate = rates.x;

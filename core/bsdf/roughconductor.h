@@ -16,9 +16,9 @@ TR_NAMESPACE_BEGIN
 INLINE uint roughconductor_flags(Material m, TexCoord uv) { return BSDF_GLOSSY_REFLECTION; }
 
 INLINE Microfacet roughconductor_distribution(Material m, TexCoord uv) {
-  return microfacet_make(
-      (m.flags & MATERIAL_BECKMANN) != 0u, eval_textured_1(m.param[CONDUCTOR_ALPHA_U], uv),
-      eval_textured_1(m.param[CONDUCTOR_ALPHA_V], uv), (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
+  return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, m.param[CONDUCTOR_ALPHA_U].value.x,
+                         m.param[CONDUCTOR_ALPHA_V].value.x,
+                         (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
 INLINE vec3 roughconductor_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
@@ -28,10 +28,9 @@ INLINE vec3 roughconductor_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   float D = microfacet_d(d, h);
   if (D == 0.0f) return vec3(0.0f);
   float G = microfacet_g(d, wi, wo, h);
-  vec3 F = fresnel_conductor(dot(wi, h), eval_textured(m.param[CONDUCTOR_ETA], uv),
-                             eval_textured(m.param[CONDUCTOR_K], uv));
+  vec3 F = fresnel_conductor(dot(wi, h), m.param[CONDUCTOR_ETA].value, m.param[CONDUCTOR_K].value);
   // f cos_o = F D G / (4 cos_i).
-  return F * eval_textured(m.param[CONDUCTOR_SPECULAR_REFLECTANCE], uv) * (D * G / (4.0f * wi.z));
+  return F * m.param[CONDUCTOR_SPECULAR_REFLECTANCE].value * (D * G / (4.0f * wi.z));
 }
 
 INLINE float roughconductor_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {

@@ -23,9 +23,9 @@ INLINE uint roughdielectric_flags(Material m, TexCoord uv) {
 }
 
 INLINE Microfacet roughdielectric_distribution(Material m, TexCoord uv) {
-  return microfacet_make(
-      (m.flags & MATERIAL_BECKMANN) != 0u, eval_textured_1(m.param[DIELECTRIC_ALPHA_U], uv),
-      eval_textured_1(m.param[DIELECTRIC_ALPHA_V], uv), (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
+  return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, m.param[DIELECTRIC_ALPHA_U].value.x,
+                         m.param[DIELECTRIC_ALPHA_V].value.x,
+                         (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
 // The distribution normals are drawn from: Walter et al.'s widened roughness without
@@ -62,14 +62,13 @@ INLINE vec3 roughdielectric_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (D == 0.0f || G == 0.0f) return vec3(0.0f);
   float F = fresnel_dielectric_reflectance(dot(wi, h), m.eta);
   if (reflect) {
-    return eval_textured(m.param[DIELECTRIC_SPECULAR_REFLECTANCE], uv) *
-           (F * D * G / (4.0f * abs(cos_i)));
+    return m.param[DIELECTRIC_SPECULAR_REFLECTANCE].value * (F * D * G / (4.0f * abs(cos_i)));
   }
   float wi_h = dot(wi, h);
   float wo_h = dot(wo, h);
   float denom = wi_h + eta * wo_h;
   float value = abs((1.0f - F) * D * G * wi_h * wo_h / (cos_i * denom * denom));
-  return eval_textured(m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE], uv) * value;
+  return m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE].value * value;
 }
 
 // Density of h for wi, times the probability of the chosen lobe and the Jacobian dh/dwo.

@@ -54,7 +54,7 @@ INLINE vec3 roughplastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   Microfacet d = roughplastic_distribution(m);
   vec3 h = normalize(wo + wi);
   float F = fresnel_dielectric_reflectance(dot(wi, h), m.eta);
-  vec3 value = eval_textured(m.param[PLASTIC_SPECULAR_REFLECTANCE], uv) *
+  vec3 value = m.param[PLASTIC_SPECULAR_REFLECTANCE].value *
                (F * microfacet_d(d, h) * microfacet_g(d, wi, wo, h) / (4.0f * wi.z));
   float t_i = roughplastic_transmittance(m, wi.z);
   float t_o = roughplastic_transmittance(m, wo.z);

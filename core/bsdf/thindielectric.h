@@ -22,12 +22,10 @@ INLINE BsdfSample thindielectric_sample(Material m, TexCoord uv, vec3 wi, float 
   float r = fresnel_dielectric_reflectance(abs(wi.z), m.eta);
   r *= 2.0f / (1.0f + r);
   if (u1 <= r) {
-    return bsdf_sample_make(reflect_local(wi), r,
-                            eval_textured(m.param[DIELECTRIC_SPECULAR_REFLECTANCE], uv), 1.0f,
-                            BSDF_DELTA_REFLECTION);
+    return bsdf_sample_make(reflect_local(wi), r, m.param[DIELECTRIC_SPECULAR_REFLECTANCE].value,
+                            1.0f, BSDF_DELTA_REFLECTION);
   }
-  return bsdf_sample_make(-wi, 1.0f - r,
-                          eval_textured(m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE], uv), 1.0f,
+  return bsdf_sample_make(-wi, 1.0f - r, m.param[DIELECTRIC_SPECULAR_TRANSMITTANCE].value, 1.0f,
                           BSDF_NULL);
 }
 
