@@ -176,7 +176,7 @@ INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // roughplastic table slot holds a texture of its own, not a parameter, and is left as it is;
 // flags are taken from the unevaluated material (a textured spec_trans transmits everywhere).
 INLINE Material material_at(Material m, TexCoord uv) {
-  for (uint k = 0u; k <= MATERIAL_PARAM_COUNT; ++k) {
+  UNROLL for (uint k = 0u; k <= MATERIAL_PARAM_COUNT; ++k) {
     bool opacity = k == MATERIAL_PARAM_COUNT;
     if (!opacity && m.type == BSDF_ROUGHPLASTIC && k == ROUGHPLASTIC_TABLE) continue;
     TexturedValue v = opacity ? m.opacity : m.param[k];

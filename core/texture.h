@@ -54,7 +54,7 @@ INLINE vec3 texture_texel(Texture t, int i, int j) {
   ivec2 p = ivec2(i, j);
   // One wrap per axis in a loop: every lookup of every textured parameter is inlined into the
   // shader, so the lookup is kept to one call site of each helper.
-  for (int a = 0; a < 2; ++a) p[a] = texture_wrap(p[a], size[a], t.wrap_mode);
+  UNROLL for (int a = 0; a < 2; ++a) p[a] = texture_wrap(p[a], size[a], t.wrap_mode);
   return vec3(scene_texel(t.texel_offset + uint(p.y) * t.width + uint(p.x)));
 }
 
@@ -80,8 +80,9 @@ INLINE TexelQuad texture_texels(Texture t, vec2 st) {
   TexelQuad q;
   q.w1 = pos - p0;
   int count = nearest ? 1 : 4;
-  for (int k = 0; k < count; ++k)
-    q.v[k] = texture_texel(t, int(p0.x) + (k & 1), int(p0.y) + (k >> 1));
+  UNROLL for (int k = 0; k < 4; ++k) {
+    if (k < count) q.v[k] = texture_texel(t, int(p0.x) + (k & 1), int(p0.y) + (k >> 1));
+  }
   return q;
 }
 
@@ -105,7 +106,8 @@ INLINE vec3 eval_texture(uint texture, vec2 uv) {
 INLINE vec3 mesh_attribute_value(uint offset, uint dim, uint i) {
   uint first = offset + dim * i;
   vec3 v;
-  for (uint k = 0u; k < 3u; ++k) v[k] = uintBitsToFloat(scene_attribute(first + min(k, dim - 1u)));
+  UNROLL for (uint k = 0u; k < 3u; ++k) v[k] =
+      uintBitsToFloat(scene_attribute(first + min(k, dim - 1u)));
   return v;
 }
 
@@ -123,8 +125,11 @@ INLINE vec3 eval_mesh_attribute(Texture t, TexCoord c) {
   bool per_face = t.attribute_per_face != 0u;
   uint base = s.first_index + 3u * c.primitive;
   vec3 v[3];
-  for (uint k = 0u; k < (per_face ? 1u : 3u); ++k)
-    v[k] = mesh_attribute_value(offset, dim, per_face ? c.primitive : scene_index(base + k));
+  uint count = per_face ? 1u : 3u;
+  UNROLL for (uint k = 0u; k < 3u; ++k) {
+    if (k < count)
+      v[k] = mesh_attribute_value(offset, dim, per_face ? c.primitive : scene_index(base + k));
+  }
   float b1 = c.barycentrics.x;
   float b2 = c.barycentrics.y;
   vec3 value = per_face ? v[0] : v[0] * (1.0f - b1 - b2) + (v[1] * b1 + v[2] * b2);
