@@ -40,16 +40,19 @@ TR_NAMESPACE_END
 
 #endif
 
-// UNROLL asks the shader compiler to unroll a loop of constant trip count (GLSL
-// [[unroll]], GL_EXT_control_flow_attributes). The loops
-// that keep one inlined copy of a helper (material_at, the texel and attribute fetches) index
-// arrays and struct members with the loop counter; unrolled, the indices are constants and
-// the values stay in registers instead of local memory (2-3x the H200's throughput on
-// textured scenes).
-#ifndef __cplusplus
-#define UNROLL [[unroll]]
-#else
+// UNROLL asks the shader compiler to unroll a loop of constant trip count (GLSL [[unroll]],
+// GL_EXT_control_flow_attributes). The loops that keep one inlined copy of a helper
+// (material_at, the texel and attribute fetches) index arrays and struct members with the loop
+// counter; unrolled, the indices are constants and the values stay in registers instead of
+// local memory (2-3x the H200's throughput on textured scenes). A build with TR_KEEP_LOOPS keeps
+// them loops ([[dont_unroll]]): the one for CPU devices (lavapipe), whose LLVM compiles it in half
+// the time and runs it as fast (gpu_backend/render_gpu.cpp, BENCHMARKS.md).
+#if defined(__cplusplus)
 #define UNROLL
+#elif defined(TR_KEEP_LOOPS)
+#define UNROLL [[dont_unroll]]
+#else
+#define UNROLL [[unroll]]
 #endif
 
 // PRECISE marks a value the shader compiler must compute exactly as written (GLSL `precise`,

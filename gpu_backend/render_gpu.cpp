@@ -16,6 +16,7 @@
 #include "gpu_backend/vk_instance.h"
 #include "render/pass_size.h"
 #include "spirv/raygen.h"
+#include "spirv/raygen_loops.h"
 
 namespace tr {
 
@@ -58,6 +59,11 @@ class GpuRenderer final : public Renderer {
     device_ = std::make_unique<VulkanDevice>(*instance_, device_info_);
     timings_.setup_seconds = seconds_since(phase);
     phase = Clock::now();
+    // The renderer's shader keeps its loops on a CPU device (core/prelude.h UNROLL).
+    if (raygen == spirv_raygen && device_info_.cpu) {
+      raygen = spirv_raygen_loops;
+      raygen_bytes = sizeof(spirv_raygen_loops);
+    }
     pipeline_ = std::make_unique<RayTracingPipeline>(
         *device_, raygen, raygen_bytes,
         tuning.specialize ? scene_features(scene.buffers) : all_features());
