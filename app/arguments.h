@@ -16,6 +16,8 @@ class Arguments {
   Arguments(int argc, char** argv) : argc_(argc), argv_(argv) {}
   bool more() const { return index_ < argc_; }
   std::string next() { return argv_[index_++]; }
+  // The next word, not consumed (more() must hold).
+  std::string peek() const { return argv_[index_]; }
   // The value following option `name`.
   std::string value(const std::string& name) {
     if (!more()) throw UsageError(name + " needs a value");

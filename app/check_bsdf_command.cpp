@@ -3,9 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,6 +13,7 @@
 #include "app/arguments.h"
 #include "app/exit_codes.h"
 #include "gpu_backend/gpu_error.h"
+#include "io/temp_file.h"
 #include "shader_bsdf.h"
 #include "validation/image/json_writer.h"
 
@@ -38,10 +39,21 @@ const char* kUsage =
     "                           the whole grid (default 0.01)\n"
     "  --seed S                 seed of the random draws (default 1)\n"
     "  --not-reciprocal         skip the reciprocity check\n"
+    "  --convention k=v,...     the file's convention, converted to twinray's: cosine=included|\n"
+    "                           excluded (user_eval returns f|cos theta_o| or f; user_sample's\n"
+    "                           weight follows), normal=z|y, incident=away|towards (the\n"
+    "                           direction of wi); default cosine=included,normal=z,incident=away\n"
+    "  --against PLUGIN k=v ... compare with a twinray BSDF plugin at these parameters (Mitsuba\n"
+    "                           3 names, e.g. roughconductor distribution=ggx alpha=0.3): eval\n"
+    "                           and pdf over a (theta_i, theta_o, phi_o) grid, directional albedo\n"
+    "                           at the incident angles above; differences fail the run (pdf ones\n"
+    "                           are only reported); one parameter set only\n"
+    "  --plot OUT.svg           with --against: heat map of the eval differences\n"
     "  --device N               Vulkan device: index or name substring (twinray devices)\n"
     "  --json OUT.json          write the report as JSON\n"
     "exit status: 0 all checks pass, 1 some fail, 2 usage error, 3 the shader does not compile\n"
-    "             (glslang's errors as FILE:LINE), 4 no usable device, 5 JSON not writable\n";
+    "             (glslang's errors as FILE:LINE), 4 no usable device, 5 JSON report or plot\n"
+    "             not writable\n";
 
 float parse_float(const std::string& text, const std::string& what) {
   char* end = nullptr;
@@ -94,7 +106,8 @@ std::string json_report(const std::string& file, const std::string& device,
 
 int check_bsdf_command(int argc, char** argv) {
   Arguments args(argc - 1, argv + 1);
-  std::string file, json, device_selector;
+  std::string file, json, device_selector, against_plugin, plot;
+  std::vector<shader_bsdf::PluginParameter> against_parameters;
   std::map<std::string, std::vector<float>> params;
   shader_bsdf::CheckOptions options;
   std::size_t samples = 100000;
@@ -117,6 +130,25 @@ int check_bsdf_command(int argc, char** argv) {
         seed = args.uint_value(a, 0);
       } else if (a == "--not-reciprocal") {
         options.reciprocal = false;
+      } else if (a == "--convention") {
+        try {
+          options.convention = shader_bsdf::parse_convention(args.value(a));
+        } catch (const std::invalid_argument& e) {
+          throw UsageError(e.what());
+        }
+      } else if (a == "--against") {
+        if (!against_plugin.empty()) throw UsageError("--against given twice");
+        against_plugin = args.value(a);
+        // Its parameters: the NAME=VALUE words that follow.
+        while (args.more() && args.peek().find('=') != std::string::npos && args.peek()[0] != '-') {
+          try {
+            against_parameters.push_back(shader_bsdf::parse_plugin_parameter(args.next()));
+          } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+          }
+        }
+      } else if (a == "--plot") {
+        plot = args.value(a);
       } else if (a == "--device") {
         device_selector = args.value(a);
       } else if (a == "--json") {
@@ -130,6 +162,7 @@ int check_bsdf_command(int argc, char** argv) {
       }
     }
     if (file.empty()) throw UsageError("no shader file given");
+    if (!plot.empty() && against_plugin.empty()) throw UsageError("--plot needs --against");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "twinray check-bsdf: %s\n%s", e.what(), kUsage);
     return kExitUsage;
@@ -165,9 +198,27 @@ int check_bsdf_command(int argc, char** argv) {
   options.validation.consistency.random_pairs = samples / 4;
   options.validation.consistency.seed = seed + 1;
   options.validation.albedo_samples = samples / 4;
+  options.against_options.albedo_samples = samples / 4;
+  options.against_options.seed = seed + 2;
+  const auto grid = shader_bsdf::parameter_grid(source.parameters, params);
+  std::unique_ptr<shader_bsdf::PluginBsdf> against;
+  if (!against_plugin.empty()) {
+    if (grid.size() != 1) {
+      std::fprintf(stderr,
+                   "twinray check-bsdf: --against compares one parameter set; --params gives %zu\n",
+                   grid.size());
+      return kExitUsage;
+    }
+    try {
+      against = std::make_unique<shader_bsdf::PluginBsdf>(against_plugin, against_parameters);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "twinray check-bsdf: %s\n", e.what());
+      return kExitUsage;
+    }
+    options.against = against.get();
+  }
   try {
     shader_bsdf::ShaderDevice device(spirv, device_selector);
-    const auto grid = shader_bsdf::parameter_grid(source.parameters, params);
     auto start = std::chrono::steady_clock::now();
     shader_bsdf::CheckOutcome outcome =
         shader_bsdf::check_shader_bsdf(device, source, grid, options);
@@ -179,12 +230,14 @@ int check_bsdf_command(int argc, char** argv) {
               << " device evaluations in " << outcome.batches << " batches, " << seconds
               << " s; overall significance " << options.validation.significance << "\n";
     report.print(std::cout);
+    for (const shader_bsdf::AgainstResult& a : outcome.against)
+      std::cout << shader_bsdf::against_table(a);
     std::size_t failed = 0;
     for (const validation::CheckResult& c : report.checks) {
       if (c.passed) continue;
       ++failed;
       std::cout << "FAILED " << c.check << " [" << c.bsdf << "]";
-      if (c.check != "extremes") {
+      if (c.wi != glm::vec3(0.0f)) {
         double theta = std::acos(std::max(-1.0, std::min(1.0, double(c.wi.z)))) * 180.0 / M_PI;
         double phi = std::atan2(double(c.wi.y), double(c.wi.x)) * 180.0 / M_PI;
         std::cout << " at theta_i=" << theta << " phi_i=" << phi << " wi=(" << c.wi.x << ", "
@@ -196,10 +249,19 @@ int check_bsdf_command(int argc, char** argv) {
     std::cout << (failed == 0 ? "PASS" : "FAIL") << ": " << report.checks.size() - failed << "/"
               << report.checks.size() << " checks passed\n";
     if (!json.empty()) {
-      std::ofstream out(json, std::ios::binary);
-      out << json_report(file, device.name(), report, options.validation.significance) << "\n";
-      if (!out) {
-        std::fprintf(stderr, "twinray check-bsdf: cannot write %s\n", json.c_str());
+      try {
+        write_text_file(
+            json, json_report(file, device.name(), report, options.validation.significance) + "\n");
+      } catch (const FileError& e) {
+        std::fprintf(stderr, "twinray check-bsdf: cannot write the JSON report: %s\n", e.what());
+        return kExitOutput;
+      }
+    }
+    if (!plot.empty()) {
+      try {
+        write_text_file(plot, shader_bsdf::against_heat_map_svg(outcome.against.front()));
+      } catch (const FileError& e) {
+        std::fprintf(stderr, "twinray check-bsdf: cannot write the plot: %s\n", e.what());
         return kExitOutput;
       }
     }

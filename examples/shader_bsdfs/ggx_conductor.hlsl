@@ -1,30 +1,48 @@
 // HLSL copy of ggx_conductor.glsl (checked through glslang's HLSL front end).
-// A rough conductor for `twinray check-bsdf` (validation/shader_bsdf/README.md): the GGX
-// (Trowbridge-Reitz) microfacet distribution, the height-correlated Smith masking-shadowing
-// term, Schlick's Fresnel approximation from the reflectance at normal incidence f0, and
-// visible-normal sampling after Heitz, "Sampling the GGX Distribution of Visible Normals",
-// JCGT 7(4), 2018 (Listing 1). Twinray's convention: local frame, +z the normal, wi and wo both
-// pointing away from the surface, user_eval includes |cos theta_o|.
+// A rough conductor for `twinray check-bsdf` (validation/shader_bsdf/README.md), written to be
+// Mitsuba 3's `roughconductor` with distribution=ggx: the GGX (Trowbridge-Reitz) distribution
+// (Walter et al., "Microfacet Models for Refraction through Rough Surfaces", EGSR 2007, eq. 33),
+// the separable Smith masking-shadowing G = G1(wi) G1(wo) (ibid., eq. 23, as Mitsuba evaluates
+// it), the exact Fresnel reflectance of a conductor of complex index eta + i k, and sampling of
+// the visible normals (Heitz, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4),
+// 2018, Listing 1). Check it against twinray's plugin with
+//   twinray check-bsdf ggx_conductor.hlsl --against roughconductor distribution=ggx alpha=0.3 \
+//       eta=0.2 k=3
+// Twinray's convention: local frame, +z the normal, wi and wo both pointing away from the
+// surface, user_eval includes |cos theta_o|.
 #pragma twinray_param alpha 0.3
-#pragma twinray_param f0 0.9
+#pragma twinray_param eta 0.2
+#pragma twinray_param k 3.0
 
 static const float USER_PI = 3.14159265358979;
 
-// D(m) = 1 / (pi a^2 ((mx^2 + my^2) / a^2 + mz^2)^2) (Walter et al. 2007, eq. 33).
+// D(m) = 1 / (pi a^2 ((mx^2 + my^2) / a^2 + mz^2)^2).
 float ggx_d(float3 m, float a) {
   float t = (m.x * m.x + m.y * m.y) / (a * a) + m.z * m.z;
   return 1.0 / (USER_PI * a * a * t * t);
 }
 
-// Smith's Lambda for GGX (Heitz 2014, "Understanding the masking-shadowing function", eq. 72).
-float ggx_lambda(float3 v, float a) {
-  float t2 = a * a * (v.x * v.x + v.y * v.y) / (v.z * v.z);
-  return 0.5 * (-1.0 + sqrt(1.0 + t2));
+// G1(v) = 2 / (1 + sqrt(1 + a^2 tan^2 theta_v)) (Walter et al. 2007, eq. 34).
+float ggx_g1(float3 v, float a) {
+  float tan2 = (v.x * v.x + v.y * v.y) / (v.z * v.z);
+  return 2.0 / (1.0 + sqrt(1.0 + a * a * tan2));
 }
 
-float schlick(float cos_theta, float f0) {
-  float c = 1.0 - clamp(cos_theta, 0.0, 1.0);
-  return f0 + (1.0 - f0) * c * c * c * c * c;
+// Unpolarized reflectance of a conductor, from the Fresnel equations with a complex index
+// (Born & Wolf, "Principles of Optics", §14.2; the closed form of pbrt-v3 §8.2.1):
+//   a^2 + b^2 = sqrt((eta^2 - k^2 - sin^2)^2 + 4 eta^2 k^2),  a^2 = (a^2 + b^2 + eta^2 - k^2 -
+//   sin^2) / 2, Rs = (a^2 + b^2 - 2 a cos + cos^2) / (a^2 + b^2 + 2 a cos + cos^2),
+//   Rp = Rs (cos^2 (a^2 + b^2) - 2 a cos sin^2 + sin^4) / (cos^2 (a^2 + b^2) + 2 a cos sin^2 +
+//   sin^4).
+float fresnel_conductor(float c, float eta, float k) {
+  float c2 = c * c;
+  float s2 = 1.0 - c2;
+  float t = eta * eta - k * k - s2;
+  float ab2 = sqrt(t * t + 4.0 * eta * eta * k * k);
+  float a = sqrt(max(0.0, 0.5 * (ab2 + t)));
+  float rs = (ab2 - 2.0 * a * c + c2) / (ab2 + 2.0 * a * c + c2);
+  float rp = rs * (c2 * ab2 - 2.0 * a * c * s2 + s2 * s2) / (c2 * ab2 + 2.0 * a * c * s2 + s2 * s2);
+  return 0.5 * (rs + rp);
 }
 
 // Heitz 2018, Listing 1: a normal from D_wi(m) = G1(wi) max(0, wi.m) D(m) / cos theta_i.
@@ -43,20 +61,20 @@ float3 sample_vndf(float3 wi, float a, float2 u) {
   return normalize(float3(a * nh.x, a * nh.y, max(1e-7, nh.z)));
 }
 
-// f cos theta_o = F D G2 / (4 cos theta_i).
+// f cos theta_o = F(wi.m) D(m) G1(wi) G1(wo) / (4 cos theta_i).
 float3 user_eval(float3 wi, float3 wo, UserParams p) {
   if (wi.z <= 0.0 || wo.z <= 0.0) return float3(0.0, 0.0, 0.0);
   float3 m = normalize(wi + wo);
-  float g2 = 1.0 / (1.0 + ggx_lambda(wi, p.alpha) + ggx_lambda(wo, p.alpha));
-  return (float3)(schlick(dot(wi, m), p.f0) * ggx_d(m, p.alpha) * g2 / (4.0 * wi.z));
+  float g = ggx_g1(wi, p.alpha) * ggx_g1(wo, p.alpha);
+  return (float3)(fresnel_conductor(dot(wi, m), p.eta, p.k) * ggx_d(m, p.alpha) * g / (4.0 * wi.z));
 }
 
-// D_wi(m) / (4 wi.m) = G1(wi) D(m) / (4 cos theta_i) (the reflection's Jacobian, Walter 2007).
+// D_wi(m) / (4 wi.m) = G1(wi) D(m) / (4 cos theta_i) (the reflection's Jacobian, Walter 2007,
+// eq. 14).
 float user_pdf(float3 wi, float3 wo, UserParams p) {
   if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
   float3 m = normalize(wi + wo);
-  float g1 = 1.0 / (1.0 + ggx_lambda(wi, p.alpha));
-  return g1 * ggx_d(m, p.alpha) / (4.0 * wi.z);
+  return ggx_g1(wi, p.alpha) * ggx_d(m, p.alpha) / (4.0 * wi.z);
 }
 
 float3 user_sample(float3 wi, float3 u, UserParams p, out float3 wo, out float pdf) {
@@ -71,8 +89,6 @@ float3 user_sample(float3 wi, float3 u, UserParams p, out float3 wo, out float p
     pdf = 0.0;
     return float3(0.0, 0.0, 0.0);
   }
-  float lambda_i = ggx_lambda(wi, p.alpha);
-  float g1 = 1.0 / (1.0 + lambda_i);
-  float g2 = 1.0 / (1.0 + lambda_i + ggx_lambda(wo, p.alpha));
-  return (float3)(schlick(dot(wi, m), p.f0) * g2 / g1);  // eval / pdf
+  // eval / pdf = F G1(wo)
+  return (float3)(fresnel_conductor(dot(wi, m), p.eta, p.k) * ggx_g1(wo, p.alpha));
 }

@@ -1,8 +1,8 @@
 #!/bin/bash
 # `twinray check-bsdf` on bad input (issue 16): a shader (GLSL or HLSL) that does not compile
 # exits 3 with glslang's error as FILE:LINE, a malformed parameter declaration exits 3 with
-# FILE:LINE, usage errors exit 2, an unknown device 4, an unwritable JSON report 5, and a
-# sample() that never succeeds fails (exit 1).
+# FILE:LINE, usage errors exit 2 (bad --against and --convention included), an unknown device 4,
+# an unwritable JSON report or plot 5, and a sample() that never succeeds fails (exit 1).
 #   check_bsdf_errors.sh TWINRAY EXAMPLES_DIR
 set -u
 twinray=$1
@@ -54,4 +54,16 @@ expect 2 "not a finite number" "$examples/lambert.glsl" --params albedo=x
 expect 2 "unknown option" "$examples/lambert.glsl" --frobnicate
 expect 4 "no-such-device" "$examples/lambert.glsl" --device no-such-device
 expect 5 "cannot write" "$examples/lambert.glsl" --samples 1000 --json "$dir/no/such/folder.json"
+# --against and --convention (a plugin or parameter twinray's loader refuses is a usage error).
+ggx=$examples/ggx_conductor.glsl
+expect 2 "^twinray check-bsdf: --against nosuch: .*not supported" "$ggx" --against nosuch alpha=0.3
+expect 2 "^twinray check-bsdf: --against roughconductor alpah=0.3: unused parameter 'alpah'" \
+  "$ggx" --against roughconductor distribution=ggx alpah=0.3
+expect 2 "check-bsdf: --against: 'alpha=' is not NAME=VALUE" "$ggx" --against roughconductor alpha=
+expect 2 "check-bsdf: --against compares one parameter set; --params gives 2" "$ggx" --against \
+  roughconductor --params alpha=0.1/0.2
+expect 2 "check-bsdf: --plot needs --against" "$ggx" --plot "$dir/plot.svg"
+expect 2 "check-bsdf: --convention: 'normal=x' is none of" "$ggx" --convention normal=x
+expect 5 "cannot write the plot" "$ggx" --samples 1000 --against roughconductor distribution=ggx \
+  --plot "$dir/no/such/folder.svg"
 exit $fail

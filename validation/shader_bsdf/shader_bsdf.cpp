@@ -43,16 +43,27 @@ CheckOutcome check_shader_bsdf(ShaderDevice& device, const ShaderSource& source,
   CheckOutcome outcome;
   for (const std::vector<float>& set : grid) {
     ShaderBsdf bsdf(device, set);
-    validation::BsdfUnderTest under_test =
-        bsdf.under_test(parameter_label(source.parameters, set), options.reciprocal);
+    const validation::BsdfUnderTest under_test = in_twinray_convention(
+        bsdf.under_test(parameter_label(source.parameters, set), options.reciprocal),
+        options.convention);
     validation::ValidationOptions o = options.validation;
     // Šidák over every statistical test of the grid: a correct BSDF fails the whole run with
     // probability `significance`.
+    const std::size_t against_tests =
+        options.against ? options.against_options.albedo_theta_degrees.size() : 0;
     o.alpha_per_test = validation::sidak_alpha(
         o.significance,
-        validation::statistical_test_count(under_test, incident.size()) * grid.size());
+        (validation::statistical_test_count(under_test, incident.size()) + against_tests) *
+            grid.size());
     o.run_check = [&bsdf](const std::function<void()>& check) { bsdf.run_check(check); };
     outcome.report.append(validation::validate_bsdf(under_test, incident, o));
+    if (options.against) {
+      AgainstOptions a = options.against_options;
+      a.alpha_per_test = o.alpha_per_test;
+      outcome.against.push_back(
+          compare_against(under_test, o.run_check, options.against->under_test(), a));
+      outcome.report.append(outcome.against.back().report());
+    }
     // validation/bsdf's checks pass a sample() whose every draw fails (nothing is binned and
     // nothing is weighed); a user's BSDF must succeed at least once in kDraws stratified draws at
     // every incident direction above the horizon.

@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "against.h"
+#include "convention.h"
+#include "plugin_bsdf.h"
 #include "shader_device.h"
 #include "shader_source.h"
 #include "twinray_validation.h"
@@ -23,6 +26,11 @@ struct CheckOptions {
   double incident_phi_degrees = 30.0;
   validation::ValidationOptions validation;  // significance: overall, over the whole grid
   bool reciprocal = true;
+  Convention convention;  // the user's file's, converted to twinray's
+  // --against: compare each parameter set with this plugin (its albedo tests join the Šidák
+  // correction of the run).
+  const PluginBsdf* against = nullptr;
+  AgainstOptions against_options;
 };
 
 // Parameter sets: the Cartesian product of the values given per parameter (defaults elsewhere).
@@ -35,9 +43,10 @@ std::string parameter_label(const std::vector<ShaderParameter>& declared,
                             const std::vector<float>& set);
 
 struct CheckOutcome {
-  validation::Report report;    // one group of lines per parameter set, named by its label
-  std::size_t evaluations = 0;  // device evaluations
-  std::size_t batches = 0;      // device dispatches
+  validation::Report report;           // one group of lines per parameter set, named by its label
+  std::size_t evaluations = 0;         // device evaluations
+  std::size_t batches = 0;             // device dispatches
+  std::vector<AgainstResult> against;  // per parameter set, with --against
 };
 
 CheckOutcome check_shader_bsdf(ShaderDevice& device, const ShaderSource& source,

@@ -1,6 +1,7 @@
-// BROKEN on purpose (examples/shader_bsdfs/ggx_conductor.glsl with a bug): user_eval divides by
-// cos theta_o and multiplies it back, and its horizon test lets wo.z = 0 through, so a grazing
-// wo gives 0 / 0 = NaN; the extremes check fails.
+// BROKEN on purpose (a GGX conductor with Schlick's Fresnel and the height-correlated Smith
+// term — examples/shader_bsdfs/ggx_conductor_schlick.glsl but for that term — with a bug):
+// user_eval divides by cos theta_o and multiplies it back, and its horizon test lets wo.z = 0
+// through, so a grazing wo gives 0 / 0 = NaN; the extremes check fails.
 #pragma twinray_param alpha 0.3
 #pragma twinray_param f0 0.9
 

@@ -1,6 +1,8 @@
-// BROKEN on purpose (examples/shader_bsdfs/ggx_conductor.glsl with a bug): user_sample draws
-// visible normals of a GGX distribution 1.5 times rougher than the one user_pdf and user_eval
-// use, a copy-paste slip between two roughness parameters; the chi-square test fails.
+// BROKEN on purpose (a GGX conductor with Schlick's Fresnel and the height-correlated Smith
+// term — examples/shader_bsdfs/ggx_conductor_schlick.glsl but for that term — with a bug):
+// user_sample draws visible normals of a GGX distribution 1.5 times rougher than the one
+// user_pdf and user_eval use, a copy-paste slip between two roughness parameters; the
+// chi-square test fails.
 #pragma twinray_param alpha 0.3
 #pragma twinray_param f0 0.9
 
