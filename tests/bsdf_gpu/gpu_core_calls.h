@@ -1,19 +1,21 @@
-// CoreCalls on the GLSL build of core/: a memoizing batch evaluator. The validation library
-// calls its callables one at a time; here each call is looked up in a cache of values computed
-// by bsdf_probe.comp. A miss records the query and answers with the C++ build's value so the
-// check can go on; after the check, every miss is evaluated on the device in one batch and the
-// check runs again, until a run misses nothing. The verdict of a check therefore rests on device
-// values alone. Queries are keyed by the exact bits of their arguments.
+// CoreCalls on the GLSL build of core/: validation/device_batch's memoizing evaluator over
+// bsdf_probe.comp. The validation library calls its callables one at a time; each call is looked
+// up in a cache of device values. A miss records the query and answers with the C++ build's value
+// so the check can go on; after the check, every miss is evaluated on the device in one batch and
+// the check runs again, until a run misses nothing. The verdict of a check therefore rests on
+// device values alone. Every evaluated batch is compared with the C++ values it replaced.
 #ifndef TWINRAY_TESTS_BSDF_GPU_GPU_CORE_CALLS_H
 #define TWINRAY_TESTS_BSDF_GPU_GPU_CORE_CALLS_H
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "core_calls.h"
+#include "memoizing_evaluator.h"
 #include "probe_device.h"
 
 namespace tr::bsdf_gpu {
@@ -42,7 +44,7 @@ struct Lockstep {
 
 class GpuCoreCalls : public bsdf_suite::CoreCalls {
  public:
-  explicit GpuCoreCalls(ProbeDevice& device) : device_(device) {}
+  explicit GpuCoreCalls(ProbeDevice& device);
 
   vec3 warp_direction(bsdf_suite::Warp w, float parameter, vec2 u) override;
   float warp_direction_pdf(bsdf_suite::Warp w, float parameter, vec3 d) override;
@@ -58,42 +60,23 @@ class GpuCoreCalls : public bsdf_suite::CoreCalls {
   // quadrature refines where the values say so) may keep asking for new values run after run;
   // past kSpeculativeRuns, each miss is evaluated on the device at once instead of predicted,
   // so that run completes on device values alone.
-  void run_check(const std::function<void()>& check) override;
+  void run_check(const std::function<void()>& check) override { memo_.run_check(check); }
   static constexpr int kSpeculativeRuns = 4;
 
   // What was measured since the last call; resets it.
   Lockstep take_lockstep();
 
  private:
-  static constexpr uint32_t kNone = 0xffffffffu;
-  static constexpr uint64_t kEmptySlot = ~uint64_t(0);
-  // The device's value of q; on a miss, records q and returns cpu(), the C++ build's value.
-  template <typename Cpu>
-  ProbeResult query(const ProbeQuery& q, Cpu cpu);
-  uint32_t find(const ProbeQuery& q) const;
-  void index(std::size_t first, std::size_t last);  // adds queries_[first, last) to table_
   uint material_index(const Material& m);
-  void evaluate_misses();
+  // Adds a batch's device values, beside the C++ values they replace, to lockstep_.
+  void compare(const ProbeQuery* queries, const ProbeResult* gpu, const ProbeResult* cpu,
+               std::size_t count);
 
-  ProbeDevice& device_;
   // Materials live in tests/bsdf's local store (with the children of blends).
   std::map<std::string, uint> material_indices_;  // by the record's bytes
   uint last_material_ = 0;
-
-  // The values of the current check: every query evaluated on the device and its result,
-  // found through an open-addressing table of positions.
-  std::vector<ProbeQuery> queries_;
-  std::vector<ProbeResult> results_;
-  std::vector<uint64_t> table_;
-  // A check calls in much the same order on every run: the positions the calls of the
-  // previous run found (or will find, for misses) are tried in order first, without hashing.
-  std::vector<uint32_t> tape_, previous_tape_;
-  std::vector<uint32_t> tape_index_;  // position -> its first call in previous_tape_
-  std::size_t cursor_ = 0;            // the next call of previous_tape_ to try
-  bool immediate_ = false;            // evaluate misses at once (see run_check)
-  std::vector<ProbeQuery> misses_;
-  std::vector<ProbeResult> predictions_;  // the C++ build's values of misses_
-  Lockstep lockstep_;
+  device_batch::MemoizingEvaluator<ProbeQuery, ProbeResult> memo_;
+  Lockstep lockstep_;  // the comparisons; take_lockstep() adds the evaluator's counts
 };
 
 }  // namespace tr::bsdf_gpu

@@ -1,52 +1,27 @@
 // A compiled check-bsdf wrapper on a Vulkan device (lavapipe or a GPU), and the user's BSDF on it
-// as validation/bsdf's callables (twinray_validation.h), fed through their CheckRunner hook.
+// as validation/bsdf's callables (twinray_validation.h), fed through their CheckRunner hook: a
+// client of validation/device_batch.
 #pragma once
 
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <string>
 #include <vector>
 
+#include "compute_kernel.h"
+#include "memoizing_evaluator.h"
 #include "twinray_validation.h"
 
 namespace tr::shader_bsdf {
 
 namespace validation = twinray::validation;
 
-class ShaderDevice;
-
-// The user's BSDF on a device at one parameter set: the callables of validation/bsdf, answered
-// from a cache of device values. A call whose arguments are not cached yet is recorded and
-// answered with zeros; run_check() repeats a check, evaluating the recorded calls in one batch
-// between runs, until a run finds every value in the cache, so the verdict rests on device values
-// alone (the values are deterministic, so each run follows the true path one step further).
-class ShaderBsdf {
- public:
-  ShaderBsdf(ShaderDevice& device, std::vector<float> parameters);
-  ~ShaderBsdf();
-  validation::BsdfUnderTest under_test(const std::string& name, bool reciprocal);
-  void run_check(const std::function<void()>& check);
-  std::size_t evaluations() const { return evaluations_; }
-  std::size_t batches() const { return batches_; }
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-  ShaderDevice& device_;
-  std::vector<float> parameters_;
-  std::size_t evaluations_ = 0, batches_ = 0;
-};
-
 // A Vulkan compute pipeline of a compiled wrapper on device `selector` ("" the first usable one,
 // an index or a name substring, as `twinray render --device`). Throws GpuError.
 class ShaderDevice {
  public:
   ShaderDevice(const std::vector<uint32_t>& spirv, const std::string& selector);
-  ~ShaderDevice();
-  ShaderDevice(const ShaderDevice&) = delete;
-  ShaderDevice& operator=(const ShaderDevice&) = delete;
-  const std::string& name() const;
+  const std::string& name() const { return kernel_.device_name(); }
 
   // One query of the wrapper: op 0 sample (arg = u), 1 pdf (arg = wo), 2 eval (arg = wo).
   struct Query {
@@ -58,12 +33,29 @@ class ShaderDevice {
     float wo_pdf[4];  // sample: wo and pdf; pdf: pdf in [3]
     float value[4];   // sample: weight; eval: f |cos theta_o|
   };
-  void evaluate(const std::vector<Query>& queries, const std::vector<float>& parameters,
-                std::vector<Result>& results);
+  void evaluate(const Query* queries, std::size_t count, const std::vector<float>& parameters,
+                Result* results);
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  device_batch::ComputeKernel kernel_;
+};
+
+// The user's BSDF on a device at one parameter set: the callables of validation/bsdf, answered
+// from device values by device_batch's memoizing evaluator; a call not cached yet is answered with
+// zeros until its batch is evaluated.
+class ShaderBsdf {
+ public:
+  ShaderBsdf(ShaderDevice& device, std::vector<float> parameters);
+  ShaderBsdf(const ShaderBsdf&) = delete;
+  ShaderBsdf& operator=(const ShaderBsdf&) = delete;
+  validation::BsdfUnderTest under_test(const std::string& name, bool reciprocal);
+  void run_check(const std::function<void()>& check) { memo_.run_check(check); }
+  std::size_t evaluations() const { return memo_.stats().evaluations; }
+  std::size_t batches() const { return memo_.stats().batches; }
+
+ private:
+  std::vector<float> parameters_;
+  device_batch::MemoizingEvaluator<ShaderDevice::Query, ShaderDevice::Result> memo_;
 };
 
 }  // namespace tr::shader_bsdf
