@@ -175,8 +175,11 @@ INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // instead of one per parameter read keeps a single copy of the texture code per leaf call. The
 // roughplastic table slot holds a texture of its own, not a parameter, and is left as it is;
 // flags are taken from the unevaluated material (a textured spec_trans transmits everywhere).
+// A slot that no leaf material of the scene textures is skipped (TR_HAS_TEXTURED_SLOT: folded
+// by the GPU pipeline's specialization, so its lookup code is not even compiled).
 INLINE Material material_at(Material m, TexCoord uv) {
   UNROLL for (uint k = 0u; k <= MATERIAL_PARAM_COUNT; ++k) {
+    if (!TR_HAS_TEXTURED_SLOT(k)) continue;
     bool opacity = k == MATERIAL_PARAM_COUNT;
     if (!opacity && m.type == BSDF_ROUGHPLASTIC && k == ROUGHPLASTIC_TABLE) continue;
     TexturedValue v = opacity ? m.opacity : m.param[k];

@@ -90,6 +90,9 @@ TR_NAMESPACE_END
 #ifndef TR_HAS_SAMPLER
 #define TR_HAS_SAMPLER(type) true
 #endif
+#ifndef TR_HAS_TEXTURED_SLOT
+#define TR_HAS_TEXTURED_SLOT(k) true
+#endif
 
 TR_NAMESPACE_BEGIN
 

@@ -7,6 +7,10 @@ SceneFeatures scene_features(const SceneBuffers& scene) {
   for (const Material& m : scene.materials) {
     f.bsdf_types |= 1u << m.type;
     f.material_flags |= m.flags;
+    if (m.type == BSDF_BLEND) continue;  // its weight is looked up by the blend's own code
+    for (uint k = 0; k < MATERIAL_PARAM_COUNT; ++k)
+      if (m.param[k].texture != NO_INDEX) f.textured_slots |= 1u << k;
+    if (m.opacity.texture != NO_INDEX) f.textured_slots |= 1u << MATERIAL_PARAM_COUNT;
   }
   for (const Emitter& e : scene.emitters) f.emitter_types |= 1u << e.type;
   for (const Shape& s : scene.shapes) f.shape_types |= 1u << s.type;
@@ -18,6 +22,6 @@ SceneFeatures scene_features(const SceneBuffers& scene) {
   return f;
 }
 
-SceneFeatures all_features() { return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u}; }
+SceneFeatures all_features() { return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u}; }
 
 }  // namespace tr

@@ -1,5 +1,5 @@
 // The scene's feature masks, passed to every shader stage as the specialization constants
-// of shaders/features.glsl (constant_id 0..7, in this struct's order).
+// of shaders/features.glsl (constant_id 0..8, in this struct's order).
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,9 @@ struct SceneFeatures {
   uint32_t integrator_types = 0;  // bit INTEGRATOR_*
   uint32_t aov_types = 0;         // bit AOV_* (0: the scene writes no AOVs)
   uint32_t sampler_types = 0;     // bit SAMPLER_*
+  // Bit k: a leaf (non-blend) material textures parameter slot k; bit MATERIAL_PARAM_COUNT:
+  // its mask opacity (core/bsdf.h, material_at).
+  uint32_t textured_slots = 0;
 };
 
 SceneFeatures scene_features(const SceneBuffers& scene);

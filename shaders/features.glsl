@@ -15,6 +15,9 @@ layout(constant_id = 4) const uint SPEC_MATERIAL_FLAGS = 0xffffffffu;
 layout(constant_id = 5) const uint SPEC_INTEGRATOR_TYPES = 0xffffffffu;
 layout(constant_id = 6) const uint SPEC_AOV_TYPES = 0xffffffffu;
 layout(constant_id = 7) const uint SPEC_SAMPLER_TYPES = 0xffffffffu;
+// Bit k: some leaf material textures its parameter slot k (bit MATERIAL_PARAM_COUNT: its mask
+// opacity); material_at looks up only these.
+layout(constant_id = 8) const uint SPEC_TEXTURED_SLOTS = 0xffffffffu;
 
 #define TR_HAS_BSDF(type) ((SPEC_BSDF_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_EMITTER(type) ((SPEC_EMITTER_TYPES & (1u << (type))) != 0u)
@@ -25,5 +28,6 @@ layout(constant_id = 7) const uint SPEC_SAMPLER_TYPES = 0xffffffffu;
 #define TR_HAS_AOV(type) ((SPEC_AOV_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_AOVS (SPEC_AOV_TYPES != 0u)
 #define TR_HAS_SAMPLER(type) ((SPEC_SAMPLER_TYPES & (1u << (type))) != 0u)
+#define TR_HAS_TEXTURED_SLOT(k) ((SPEC_TEXTURED_SLOTS & (1u << (k))) != 0u)
 
 #endif
