@@ -3,7 +3,8 @@
 #   check_bsdf.sh TWINRAY FILE.glsl EXPECTED_STATUS [REGEX [ARGS...]]
 # runs the verb at 20000 chi-square draws per incident direction (overall significance 0.01,
 # Sidak-corrected over every statistical test), checks the exit status, and for a broken example
-# that the output names the failing case (REGEX, matched against the FAILED lines).
+# that the output names the failing case (REGEX, matched against the FAILED lines; for a passing
+# run, against every line).
 set -u
 twinray=$1
 file=$2
@@ -21,8 +22,12 @@ if [ "$status" != "$expected" ]; then
   echo "check_bsdf.sh: $file exited with $status, expected $expected"
   exit 1
 fi
-if [ -n "$pattern" ] && ! grep '^FAILED' "$out" | grep -Eq "$pattern"; then
+if [ -n "$pattern" ] && [ "$expected" != 0 ] && ! grep '^FAILED' "$out" | grep -Eq "$pattern"; then
   echo "check_bsdf.sh: no FAILED line of $file matches '$pattern'"
+  exit 1
+fi
+if [ -n "$pattern" ] && [ "$expected" = 0 ] && ! grep -Eq "$pattern" "$out"; then
+  echo "check_bsdf.sh: no line of $file's report matches '$pattern'"
   exit 1
 fi
 if ! python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["passed"] == (sys.argv[2] == "0") and d["checks"] else 1)' "$json" "$expected"; then

@@ -66,4 +66,9 @@ expect 2 "check-bsdf: --plot needs --against" "$ggx" --plot "$dir/plot.svg"
 expect 2 "check-bsdf: --convention: 'normal=x' is none of" "$ggx" --convention normal=x
 expect 5 "cannot write the plot" "$ggx" --samples 1000 --against roughconductor distribution=ggx \
   --plot "$dir/no/such/folder.svg"
+# A written plot is a whole SVG document with one cell per (theta_i, theta_o).
+expect 0 "^PASS" "$ggx" --samples 1000 --against roughconductor distribution=ggx alpha=0.3 eta=0.2 \
+  k=3 --plot "$dir/diff.svg"
+python3 -c 'import sys, xml.dom.minidom as m; d = m.parse(sys.argv[1]); sys.exit(0 if len([r for r in d.getElementsByTagName("rect") if r.getElementsByTagName("title")]) == 19 * 19 else 1)' "$dir/diff.svg" ||
+  { echo "FAIL: $dir/diff.svg is not the heat map"; fail=1; }
 exit $fail
