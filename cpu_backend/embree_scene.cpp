@@ -1,5 +1,6 @@
 #include "cpu_backend/embree_scene.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -13,6 +14,8 @@ namespace tr {
 namespace {
 
 using UserShape = EmbreeScene::UserShape;
+
+std::atomic<RayRecorder*> new_scene_recorder{nullptr};
 
 // Embree reports errors through this callback (exceptions must not cross its C frames);
 // the constructor turns a recorded error into an exception after each commit.
@@ -91,7 +94,10 @@ void analytic_bounds(const Shape& s, vec3& lower, vec3& upper) {
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const SceneBuffers& buffers) : buffers_(buffers) {
+void EmbreeScene::record_new_scenes(RayRecorder* recorder) { new_scene_recorder = recorder; }
+
+EmbreeScene::EmbreeScene(const SceneBuffers& buffers)
+    : buffers_(buffers), recorder_(new_scene_recorder) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("Embree: cannot create a device");
   rtcSetDeviceErrorFunction(device_, error_callback, &error_);
@@ -114,6 +120,7 @@ EmbreeScene::EmbreeScene(const SceneBuffers& buffers) : buffers_(buffers) {
     rtcReleaseGeometry(g);
   }
   commit(root_);
+  if (recorder_) recorder_->scene_built(*this);
 }
 
 RTCScene EmbreeScene::new_scene() {
@@ -189,23 +196,21 @@ EmbreeScene::~EmbreeScene() {
 }
 
 Hit EmbreeScene::intersect(const Ray& ray) const {
+  Hit hit = trace_closest(ray);
+  if (recorder_) recorder_->closest(ray, hit);
+  return hit;
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+  bool blocked = trace_occluded(ray);
+  if (recorder_) recorder_->shadow(ray, blocked);
+  return blocked;
+}
+
+Hit EmbreeScene::trace_closest(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rh;
-  rh.ray.org_x = ray.o.x;
-  rh.ray.org_y = ray.o.y;
-  rh.ray.org_z = ray.o.z;
-  rh.ray.tnear = ray.tmin;
-  rh.ray.dir_x = ray.d.x;
-  rh.ray.dir_y = ray.d.y;
-  rh.ray.dir_z = ray.d.z;
-  rh.ray.time = 0.0f;
-  rh.ray.tfar = ray.tmax;
-  rh.ray.mask = 0xffffffffu;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = embree_ray_hit(ray);
   rtcIntersect1(root_, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return miss_hit();
   Hit hit = miss_hit();
@@ -222,22 +227,10 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
   return hit;
 }
 
-bool EmbreeScene::occluded(const Ray& ray) const {
+bool EmbreeScene::trace_occluded(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay r;
-  r.org_x = ray.o.x;
-  r.org_y = ray.o.y;
-  r.org_z = ray.o.z;
-  r.tnear = ray.tmin;
-  r.dir_x = ray.d.x;
-  r.dir_y = ray.d.y;
-  r.dir_z = ray.d.z;
-  r.time = 0.0f;
-  r.tfar = ray.tmax;
-  r.mask = 0xffffffffu;
-  r.id = 0;
-  r.flags = 0;
+  RTCRay r = embree_ray(ray);
   rtcOccluded1(root_, &context, &r);
   return r.tfar < 0.0f;
 }

@@ -1,0 +1,308 @@
+// The renderer against Embree alone on the renderer's own rays (issue 15):
+//   bench_ray_replay --scene=FILE [--spp=N] [--threads=N] [--seed=S] [--max-rays=N]
+//                    [-D NAME=VALUE]...
+// 1. renders the scene on the CPU backend and times it (no recording);
+// 2. renders it again, same seed and threads, with an EmbreeScene RayRecorder that keeps every
+//    closest-hit and shadow query per thread, in the order the thread traced them, with its
+//    answer (48 bytes a ray; --max-rays caps the memory, 20 M rays = 960 MB by default);
+// 3. traces the recorded queries again with rtcIntersect1 / rtcOccluded1 on the same RTCScene,
+//    set up as EmbreeScene::intersect / occluded set them up, once comparing each answer with
+//    the recorded one (a mismatch is an error: exit 1) and once timed.
+// The replay runs on as many threads as the render, over chunks of consecutive rays of one
+// thread's record, each chunk in its recorded order: the coherence the renderer had.
+// Rays/s of the render over rays/s of the replay is the share of the render's time that
+// traversal alone takes.
+#include <embree3/rtcore.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cpu_backend/embree_scene.h"
+#include "cpu_backend/render_cpu.h"
+#include "render/film_state.h"
+#include "scenes/load_scene.h"
+
+namespace {
+
+using tr::Hit;
+using tr::Ray;
+
+constexpr std::uint32_t kClosest = 0;
+constexpr std::uint32_t kShadow = 1;
+constexpr size_t kChunk = 4096;  // rays of one thread's record replayed in order by one task
+
+// One query and the renderer's answer: for a closest-hit query the hit's t, primitive and shape
+// (NO_INDEX on a miss), for a shadow query `occluded` in `shape`.
+struct RayRecord {
+  Ray ray;
+  float t;
+  std::uint32_t primitive;
+  std::uint32_t shape;
+  std::uint32_t query;
+};
+static_assert(sizeof(RayRecord) == 48, "a record is the 32-byte ray and a 16-byte answer");
+
+class Recorder final : public tr::RayRecorder {
+ public:
+  void scene_built(const tr::EmbreeScene& scene) override { scene_ = &scene; }
+  void closest(const Ray& ray, const Hit& hit) override {
+    rays_.local().push_back({ray, hit.t, hit.primitive, hit.shape, kClosest});
+  }
+  void shadow(const Ray& ray, bool occluded) override {
+    rays_.local().push_back({ray, 0.0f, 0u, occluded ? 1u : 0u, kShadow});
+  }
+
+  const tr::EmbreeScene* scene() const { return scene_; }
+  std::vector<const std::vector<RayRecord>*> per_thread() const {
+    std::vector<const std::vector<RayRecord>*> out;
+    for (const std::vector<RayRecord>& v : rays_)
+      if (!v.empty()) out.push_back(&v);
+    return out;
+  }
+
+ private:
+  std::atomic<const tr::EmbreeScene*> scene_{nullptr};
+  tbb::enumerable_thread_specific<std::vector<RayRecord>> rays_;
+};
+
+struct Chunk {
+  const RayRecord* begin;
+  const RayRecord* end;
+};
+
+// Traces [c.begin, c.end) as EmbreeScene::intersect / occluded do; with kCheck,
+// returns how many answers differ from the recorded ones (t bit for bit, primitive, hit or
+// miss; occluded or not), else a value the caller keeps so that the work is not optimized away.
+template <bool kCheck>
+std::uint64_t replay(RTCScene scene, const Chunk& c) {
+  std::uint64_t result = 0;
+  for (const RayRecord* r = c.begin; r != c.end; ++r) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    if (r->query == kClosest) {
+      RTCRayHit rh = tr::embree_ray_hit(r->ray);
+      rtcIntersect1(scene, &context, &rh);
+      const bool hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      if (kCheck) {
+        const bool recorded_hit = r->shape != tr::NO_INDEX;
+        bool same = hit == recorded_hit;
+        if (same && hit)
+          same =
+              std::memcmp(&rh.ray.tfar, &r->t, sizeof(float)) == 0 && rh.hit.primID == r->primitive;
+        result += same ? 0u : 1u;
+      } else {
+        result += hit ? rh.hit.primID : 0u;
+      }
+    } else {
+      RTCRay ray = tr::embree_ray(r->ray);
+      rtcOccluded1(scene, &context, &ray);
+      const bool occluded = ray.tfar < 0.0f;
+      if (kCheck)
+        result += occluded == (r->shape != 0u) ? 0u : 1u;
+      else
+        result += occluded ? 1u : 0u;
+    }
+  }
+  return result;
+}
+
+template <bool kCheck>
+std::uint64_t replay_all(RTCScene scene, const std::vector<Chunk>& chunks) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, chunks.size(), 1), std::uint64_t(0),
+      [&](const tbb::blocked_range<size_t>& range, std::uint64_t sum) {
+        for (size_t i = range.begin(); i != range.end(); ++i)
+          sum += replay<kCheck>(scene, chunks[i]);
+        return sum;
+      },
+      [](std::uint64_t a, std::uint64_t b) { return a + b; });
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+struct TimedRender {
+  std::unique_ptr<tr::Renderer> renderer;
+  tr::FilmState film;
+  double seconds;  // the render alone: not the Embree build (make_cpu_renderer) nor the film
+};
+
+// Renders `spp` samples of every pixel, its EmbreeScene reporting to `recorder` (may be null).
+TimedRender render(const tr::Scene& scene, const tr::RenderOptions& options, std::uint32_t spp,
+                   Recorder* recorder) {
+  TimedRender r;
+  tr::EmbreeScene::record_new_scenes(recorder);
+  try {
+    r.renderer = tr::make_cpu_renderer(scene, options);
+  } catch (...) {
+    tr::EmbreeScene::record_new_scenes(nullptr);
+    throw;
+  }
+  tr::EmbreeScene::record_new_scenes(nullptr);
+  const tr::Camera& camera = scene.buffers.globals.camera;
+  r.film = tr::empty_film(camera.width, camera.height, scene.buffers.globals.integrator.aov_count,
+                          r.renderer->pass_size());
+  auto start = std::chrono::steady_clock::now();
+  r.renderer->render(spp, r.film, {});
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+struct Config {
+  std::string scene;
+  std::uint32_t spp = 0;
+  std::uint32_t threads = 0;
+  std::uint32_t seed = 0;
+  std::uint64_t max_rays = 20000000;
+  tr::LoadOptions load;
+};
+
+std::uint64_t parse_count(const std::string& arg, const std::string& value) {
+  size_t used = 0;
+  unsigned long long v = 0;
+  try {
+    v = std::stoull(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != value.size() || value[0] == '-')
+    throw std::runtime_error("bench_ray_replay: " + arg + ": \"" + value +
+                             "\" is not a non-negative integer");
+  return v;
+}
+
+Config parse(int argc, char** argv) {
+  Config c;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto value = [&](const char* prefix) {
+      return a.rfind(prefix, 0) == 0 ? a.substr(std::strlen(prefix)) : std::string();
+    };
+    if (a.rfind("--scene=", 0) == 0) {
+      c.scene = value("--scene=");
+    } else if (a.rfind("--spp=", 0) == 0) {
+      c.spp = std::uint32_t(parse_count("--spp", value("--spp=")));
+    } else if (a.rfind("--threads=", 0) == 0) {
+      c.threads = std::uint32_t(parse_count("--threads", value("--threads=")));
+    } else if (a.rfind("--seed=", 0) == 0) {
+      c.seed = std::uint32_t(parse_count("--seed", value("--seed=")));
+    } else if (a.rfind("--max-rays=", 0) == 0) {
+      c.max_rays = parse_count("--max-rays", value("--max-rays="));
+    } else if (a == "-D" && i + 1 < argc) {
+      std::string kv = argv[++i];
+      size_t eq = kv.find('=');
+      c.load.defines[kv.substr(0, eq)] = eq == std::string::npos ? "" : kv.substr(eq + 1);
+    } else {
+      throw std::runtime_error("bench_ray_replay: unknown argument \"" + a + "\"");
+    }
+  }
+  if (c.scene.empty()) throw std::runtime_error("bench_ray_replay: --scene=FILE is required");
+  return c;
+}
+
+int run(const Config& config) {
+  tr::Scene scene = tr::load_scene(config.scene, config.load);
+  const std::uint32_t spp = config.spp ? config.spp : scene.spp;
+  const std::uint32_t threads =
+      config.threads ? config.threads : std::uint32_t(tbb::info::default_concurrency());
+  tr::RenderOptions options;
+  options.spp = spp;
+  options.seed = config.seed;
+  options.threads = threads;
+
+  // One CPU renderer at a time (make_cpu_renderer binds the scene for the process).
+  std::uint64_t render_rays;
+  double render_seconds;
+  {
+    TimedRender plain = render(scene, options, spp, nullptr);
+    render_rays = plain.film.stats.rays;
+    render_seconds = plain.seconds;
+  }
+  if (render_rays > config.max_rays) {
+    std::fprintf(stderr,
+                 "bench_ray_replay: the render traces %llu rays, above --max-rays=%llu (48 bytes "
+                 "a ray); lower --spp or the resolution, or raise the cap\n",
+                 (unsigned long long)render_rays, (unsigned long long)config.max_rays);
+    return 2;
+  }
+  Recorder recorder;
+  TimedRender recorded_render = render(scene, options, spp, &recorder);
+  const tr::FilmState& film = recorded_render.film;
+  const tr::Camera& camera = scene.buffers.globals.camera;
+
+  std::vector<Chunk> chunks;
+  std::uint64_t recorded = 0, closest = 0;
+  const auto per_thread = recorder.per_thread();
+  for (const std::vector<RayRecord>* v : per_thread) {
+    recorded += v->size();
+    for (size_t i = 0; i < v->size(); i += kChunk)
+      chunks.push_back({v->data() + i, v->data() + std::min(v->size(), i + kChunk)});
+    for (const RayRecord& r : *v) closest += r.query == kClosest ? 1u : 0u;
+  }
+  if (recorded != render_rays || film.stats.rays != render_rays) {
+    std::fprintf(stderr,
+                 "bench_ray_replay: the recorded render traced %llu rays (%llu recorded), the "
+                 "timed one %llu: the two renders are not the same\n",
+                 (unsigned long long)film.stats.rays, (unsigned long long)recorded,
+                 (unsigned long long)render_rays);
+    return 1;
+  }
+
+  RTCScene rtc = recorder.scene()->rtc_scene();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  const std::uint64_t mismatches = replay_all<true>(rtc, chunks);
+  auto start = std::chrono::steady_clock::now();
+  const std::uint64_t keep = replay_all<false>(rtc, chunks);
+  const double replay_seconds = seconds_since(start);
+
+  const double render_rate = double(recorded) / render_seconds;
+  const double replay_rate = double(recorded) / replay_seconds;
+  std::printf("scene       %s (%ux%u, %u spp, seed %u, %u thread%s, Embree %s)\n",
+              config.scene.c_str(), camera.width, camera.height, spp, config.seed, threads,
+              threads == 1 ? "" : "s", RTC_VERSION_STRING);
+  std::printf("rays        %llu: %llu closest-hit, %llu shadow (%zu thread records, %.0f MB)\n",
+              (unsigned long long)recorded, (unsigned long long)closest,
+              (unsigned long long)(recorded - closest), per_thread.size(),
+              double(recorded) * sizeof(RayRecord) * 1e-6);
+  std::printf("%-11s %9s %9s\n", "", "seconds", "Mrays/s");
+  std::printf("%-11s %9.3f %9.2f\n", "renderer", render_seconds, render_rate * 1e-6);
+  std::printf("%-11s %9.3f %9.2f  (the render recording its rays; not compared)\n", "recording",
+              recorded_render.seconds, double(recorded) / recorded_render.seconds * 1e-6);
+  std::printf("%-11s %9.3f %9.2f  (rtcIntersect1/rtcOccluded1 alone; checksum %llu)\n", "replay",
+              replay_seconds, replay_rate * 1e-6, (unsigned long long)keep);
+  std::printf("ratio       %.3f  (renderer rays/s / replay rays/s)\n", render_rate / replay_rate);
+  std::printf("mismatches  %llu  (replayed answers that differ from the recorded ones)\n",
+              (unsigned long long)mismatches);
+  if (mismatches != 0) {
+    std::fprintf(stderr, "bench_ray_replay: %llu replayed rays answer differently than recorded\n",
+                 (unsigned long long)mismatches);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(parse(argc, argv));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+}
