@@ -45,7 +45,7 @@ esac
 [ -x "$twinray" ] || { echo "run.sh: $twinray not built" >&2 && exit 2; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-uptime_before=$(uptime)
+uptime_before=$(uptime | sed 's/^ *//')
 
 mesh_sizes=(1000000) emitter_counts=(1 10 100 1000 10000)
 [ $full = 1 ] && mesh_sizes+=(10000000) && emitter_counts+=(100000)
@@ -116,8 +116,8 @@ if [ $write = 1 ]; then
   block=$(
     echo "<!-- bench/suite begin -->"
     echo "Measured $(date -u '+%Y-%m-%d %H:%M UTC') by \`bench/suite/run.sh ${flags}--write OUT_DIR\`"
-    echo "(twinray built from $(git -C "$root" describe --always --dirty), $threads threads, $(nproc) cores;"
-    echo "\`uptime\` before the run: \`$uptime_before\`, after: \`$(uptime)\`)."
+    echo "(the checkout at $(git -C "$root" describe --always --dirty), $threads threads, $(nproc) cores;"
+    echo "\`uptime\` before the run: \`$uptime_before\`, after: \`$(uptime | sed 's/^ *//')\`)."
     echo
     echo "$table"
     echo "<!-- bench/suite end -->"
