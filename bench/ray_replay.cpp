@@ -11,13 +11,15 @@
 // The replay runs on as many threads as the render, over chunks of consecutive rays of one
 // thread's record, each chunk in its recorded order: the coherence the renderer had.
 // Rays/s of the render over rays/s of the replay is the share of the render's time that
-// traversal alone takes.
+// traversal alone takes; it is reported over wall-clock and over process CPU time (the latter
+// is what counts where other processes load the machine).
 #include <embree3/rtcore.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
+#include <time.h>
 
 #include <algorithm>
 #include <atomic>
@@ -132,14 +134,35 @@ std::uint64_t replay_all(RTCScene scene, const std::vector<Chunk>& chunks) {
       [](std::uint64_t a, std::uint64_t b) { return a + b; });
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+// Wall-clock and process CPU seconds (POSIX CLOCK_PROCESS_CPUTIME_ID: all of the process's
+// threads). On a machine that other processes load, the CPU seconds are what this one was given.
+struct Seconds {
+  double wall = 0.0;
+  double cpu = 0.0;
+};
+
+class Stopwatch {
+ public:
+  Stopwatch() : wall_(std::chrono::steady_clock::now()), cpu_(cpu_now()) {}
+  Seconds elapsed() const {
+    return {std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count(),
+            cpu_now() - cpu_};
+  }
+
+ private:
+  static double cpu_now() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+  }
+  std::chrono::steady_clock::time_point wall_;
+  double cpu_;
+};
 
 struct TimedRender {
   std::unique_ptr<tr::Renderer> renderer;
   tr::FilmState film;
-  double seconds;  // the render alone: not the Embree build (make_cpu_renderer) nor the film
+  Seconds seconds;  // the render alone: not the Embree build (make_cpu_renderer) nor the film
 };
 
 // Renders `spp` samples of every pixel, its EmbreeScene reporting to `recorder` (may be null).
@@ -157,9 +180,9 @@ TimedRender render(const tr::Scene& scene, const tr::RenderOptions& options, std
   const tr::Camera& camera = scene.buffers.globals.camera;
   r.film = tr::empty_film(camera.width, camera.height, scene.buffers.globals.integrator.aov_count,
                           r.renderer->pass_size());
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   r.renderer->render(spp, r.film, {});
-  r.seconds = seconds_since(start);
+  r.seconds = watch.elapsed();
   return r;
 }
 
@@ -227,7 +250,7 @@ int run(const Config& config) {
 
   // One CPU renderer at a time (make_cpu_renderer binds the scene for the process).
   std::uint64_t render_rays;
-  double render_seconds;
+  Seconds render_seconds;
   {
     TimedRender plain = render(scene, options, spp, nullptr);
     render_rays = plain.film.stats.rays;
@@ -266,12 +289,10 @@ int run(const Config& config) {
   RTCScene rtc = recorder.scene()->rtc_scene();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   const std::uint64_t mismatches = replay_all<true>(rtc, chunks);
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   const std::uint64_t keep = replay_all<false>(rtc, chunks);
-  const double replay_seconds = seconds_since(start);
+  const Seconds replay_seconds = watch.elapsed();
 
-  const double render_rate = double(recorded) / render_seconds;
-  const double replay_rate = double(recorded) / replay_seconds;
   std::printf("scene       %s (%ux%u, %u spp, seed %u, %u thread%s, Embree %s)\n",
               config.scene.c_str(), camera.width, camera.height, spp, config.seed, threads,
               threads == 1 ? "" : "s", RTC_VERSION_STRING);
@@ -279,13 +300,18 @@ int run(const Config& config) {
               (unsigned long long)recorded, (unsigned long long)closest,
               (unsigned long long)(recorded - closest), per_thread.size(),
               double(recorded) * sizeof(RayRecord) * 1e-6);
-  std::printf("%-11s %9s %9s\n", "", "seconds", "Mrays/s");
-  std::printf("%-11s %9.3f %9.2f\n", "renderer", render_seconds, render_rate * 1e-6);
-  std::printf("%-11s %9.3f %9.2f  (the render recording its rays; not compared)\n", "recording",
-              recorded_render.seconds, double(recorded) / recorded_render.seconds * 1e-6);
-  std::printf("%-11s %9.3f %9.2f  (rtcIntersect1/rtcOccluded1 alone; checksum %llu)\n", "replay",
-              replay_seconds, replay_rate * 1e-6, (unsigned long long)keep);
-  std::printf("ratio       %.3f  (renderer rays/s / replay rays/s)\n", render_rate / replay_rate);
+  const double mrays = double(recorded) * 1e-6;
+  auto row = [&](const char* name, const Seconds& t, const std::string& note) {
+    std::printf("%-11s %9.3f %9.2f %9.3f %11.2f  %s\n", name, t.wall, mrays / t.wall, t.cpu,
+                mrays / t.cpu, note.c_str());
+  };
+  std::printf("%-11s %9s %9s %9s %11s\n", "", "wall s", "Mrays/s", "CPU s", "Mrays/CPU-s");
+  row("renderer", render_seconds, "");
+  row("recording", recorded_render.seconds, "(the render recording its rays; not compared)");
+  row("replay", replay_seconds,
+      "(rtcIntersect1/rtcOccluded1 alone; checksum " + std::to_string(keep) + ")");
+  std::printf("ratio       %.3f wall, %.3f CPU  (renderer rays/s / replay rays/s)\n",
+              replay_seconds.wall / render_seconds.wall, replay_seconds.cpu / render_seconds.cpu);
   std::printf("mismatches  %llu  (replayed answers that differ from the recorded ones)\n",
               (unsigned long long)mismatches);
   if (mismatches != 0) {
