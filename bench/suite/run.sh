@@ -22,7 +22,9 @@
 # Columns: "render s" is twinray's own figure (the Embree BVH build and the sampling; not
 # scene loading or image writing); "wall s" is the whole process (/usr/bin/time %e), so
 # wall - render is the scene load (parsing, mesh files, emitter and envmap tables) plus writing
-# the EXRs and PNG: twinray prints no start-up time of its own. Peak RSS is /usr/bin/time's %M.
+# the EXRs and PNG: twinray prints no start-up time of its own. Peak RSS is /usr/bin/time's %M;
+# CPU its %P, the process's CPU time over wall time (200% = both cores of the 2-core VM busy
+# with it throughout: less says how much other processes took).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -80,7 +82,7 @@ for i in "${!names[@]}"; do
   [ "$analytic" = 0 ] || tris="$tris + $analytic analytic"
   log=$out/$name.log
   # shellcheck disable=SC2086  # the render arguments are words
-  if ! /usr/bin/time -f '%e %M' -o "$out/$name.time" "$twinray" render "$file" ${args[$i]} \
+  if ! /usr/bin/time -f '%e %M %P' -o "$out/$name.time" "$twinray" render "$file" ${args[$i]} \
     --threads "$threads" -o "$out/$name.exr" >"$log" 2>&1; then
     echo "run.sh: $name: twinray render failed; $log:" >&2 && cat "$log" >&2 && exit 1
   fi
@@ -89,19 +91,19 @@ for i in "${!names[@]}"; do
   [ -n "$summary" ] || { echo "run.sh: $name: no summary line in $log" >&2 && exit 1; }
   read -r res spp render msps mrps <<<"$(echo "$summary" |
     sed -E 's/^twinray: ([0-9]+x[0-9]+), ([0-9]+) spp, ([0-9.]+) s, ([0-9.]+) Msamples\/s, ([0-9.]+) Mrays\/s.*/\1 \2 \3 \4 \5/')"
-  read -r wall rss_kib <"$out/$name.time"
+  read -r wall rss_kib cpu <"$out/$name.time"
   row=$(awk -v n="$name" -v t="$tris" -v e="$emitters" -v r="$res" -v s="$spp" -v ren="$render" \
-    -v w="$wall" -v ms="$msps" -v mr="$mrps" -v k="$rss_kib" 'BEGIN {
+    -v w="$wall" -v ms="$msps" -v mr="$mrps" -v k="$rss_kib" -v c="$cpu" 'BEGIN {
       sub("x", "×", r)
-      printf "| %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %.3f | %.3f | %.1f |", n, t, e, r, s,
-             ren, w, w - ren, ms, mr, k / 1024 }')
+      printf "| %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %s | %.3f | %.3f | %.1f |", n, t, e,
+             r, s, ren, w, w - ren, c, ms, mr, k / 1024 }')
   echo "$row" >&2
   rows+=("$row")
 done
 
 table=$(
-  echo "| scene | triangles | emitters | resolution | spp | render s | wall s | wall − render s | Msamples/s | Mrays/s | peak RSS MiB |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| scene | triangles | emitters | resolution | spp | render s | wall s | wall − render s | CPU | Msamples/s | Mrays/s | peak RSS MiB |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s\n' "${rows[@]}"
 )
 echo "$table"
