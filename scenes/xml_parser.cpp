@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 #include "scenes/spectrum.h"
 #include "scenes/values.h"
@@ -123,6 +124,9 @@ class Parser {
   std::set<std::string> used_;  // names substituted at least once
   FileResolver resolver_;
   std::map<std::string, NodePtr> ids_;
+  // Per node, the line of each parameter name given so far: a scene of 1e5 shapes would make a
+  // scan of the scene's parameters quadratic.
+  std::unordered_map<const Node*, std::unordered_map<std::string, int>> property_lines_;
   int unnamed_ = 0;
   // <ref> elements, resolved once every file is read: Mitsuba resolves references to objects
   // declared anywhere in the scene, before or after the reference (src/core/parser.cpp).
@@ -260,10 +264,10 @@ class Parser {
   }
 
   void add_property(Node& parent, Property p) {
-    for (const Property& q : parent.props)
-      if (q.name == p.name)
-        fail(p.loc, "parameter '", p.name, "' of ", describe(parent),
-             " is specified twice (first at line ", q.loc.line, ")");
+    auto [first, added] = property_lines_[&parent].emplace(p.name, p.loc.line);
+    if (!added)
+      fail(p.loc, "parameter '", p.name, "' of ", describe(parent),
+           " is specified twice (first at line ", first->second, ")");
     parent.props.push_back(std::move(p));
   }
 
