@@ -43,8 +43,8 @@ uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
 // The Vulkan device, pipeline, scene and buffers of one render, kept across passes.
 class GpuRenderer final : public Renderer {
  public:
-  GpuRenderer(const Scene& scene, const RenderOptions& options, const uint32_t* raygen,
-              size_t raygen_bytes, const GpuTuning& tuning)
+  GpuRenderer(const Scene& scene, const RenderOptions& options, const RaygenShader& raygen,
+              const GpuTuning& tuning)
       : width_(scene.buffers.globals.camera.width),
         height_(scene.buffers.globals.camera.height),
         pixels_(static_cast<size_t>(width_) * height_),
@@ -59,13 +59,9 @@ class GpuRenderer final : public Renderer {
     device_ = std::make_unique<VulkanDevice>(*instance_, device_info_);
     timings_.setup_seconds = seconds_since(phase);
     phase = Clock::now();
-    // The renderer's shader keeps its loops on a CPU device (core/prelude.h UNROLL).
-    if (raygen == spirv_raygen && device_info_.cpu) {
-      raygen = spirv_raygen_loops;
-      raygen_bytes = sizeof(spirv_raygen_loops);
-    }
     pipeline_ = std::make_unique<RayTracingPipeline>(
-        *device_, raygen, raygen_bytes,
+        *device_, device_info_.cpu ? raygen.cpu : raygen.gpu,
+        device_info_.cpu ? raygen.cpu_bytes : raygen.gpu_bytes,
         tuning.specialize ? scene_features(scene.buffers) : all_features());
     timings_.pipeline_seconds = seconds_since(phase);
     phase = Clock::now();
@@ -223,19 +219,23 @@ class GpuRenderer final : public Renderer {
 
 }  // namespace
 
+RaygenShader renderer_raygen() {
+  return RaygenShader{spirv_raygen, sizeof(spirv_raygen), spirv_raygen_loops,
+                      sizeof(spirv_raygen_loops)};
+}
+
 std::unique_ptr<Renderer> make_gpu_renderer(const Scene& scene, const RenderOptions& options) {
-  return std::make_unique<GpuRenderer>(scene, options, spirv_raygen, sizeof(spirv_raygen),
-                                       GpuTuning());
+  return std::make_unique<GpuRenderer>(scene, options, renderer_raygen(), GpuTuning());
 }
 
 RenderResult render_gpu(const Scene& scene, const RenderOptions& options) {
-  return render_with_raygen(scene, options, spirv_raygen, sizeof(spirv_raygen));
+  return render_with_raygen(scene, options, renderer_raygen());
 }
 
 RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options,
-                                const uint32_t* raygen, size_t raygen_bytes,
-                                const GpuTuning& tuning, GpuTimings* timings) {
-  GpuRenderer renderer(scene, options, raygen, raygen_bytes, tuning);
+                                const RaygenShader& raygen, const GpuTuning& tuning,
+                                GpuTimings* timings) {
+  GpuRenderer renderer(scene, options, raygen, tuning);
   const Camera& camera = scene.buffers.globals.camera;
   RenderResult result =
       render_all(renderer, camera.width, camera.height, options.spp != 0 ? options.spp : scene.spp,

@@ -36,11 +36,27 @@ struct GpuTimings {
   uint32_t first_dispatch_spp = 0;
 };
 
+// A ray-generation shader as SPIR-V, in the build for GPUs and the one for CPU devices
+// (lavapipe): the renderer's own keeps its loops there (core/prelude.h UNROLL).
+struct RaygenShader {
+  const uint32_t* gpu;
+  size_t gpu_bytes;
+  const uint32_t* cpu;
+  size_t cpu_bytes;
+};
+
+// shaders/raygen.rgen, both builds.
+RaygenShader renderer_raygen();
+
+// A shader with one build for every device (the tests' probes).
+inline RaygenShader one_raygen(const uint32_t* spirv, size_t bytes) {
+  return RaygenShader{spirv, bytes, spirv, bytes};
+}
+
 // render_gpu with another ray-generation shader writing the same PixelBatch records
 // (shaders/batch.h); tests probe traversal with it.
 RenderResult render_with_raygen(const Scene& scene, const RenderOptions& options,
-                                const uint32_t* raygen, size_t raygen_bytes,
-                                const GpuTuning& tuning = GpuTuning(),
+                                const RaygenShader& raygen, const GpuTuning& tuning = GpuTuning(),
                                 GpuTimings* timings = nullptr);
 
 // `twinray devices`: lists every Vulkan device, whether it is usable and, if not, what it

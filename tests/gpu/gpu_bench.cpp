@@ -15,7 +15,6 @@
 #ifndef TWINRAY_BENCH_NO_LOADER
 #include "scenes/load_scene.h"
 #endif
-#include "spirv/raygen.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {
@@ -64,8 +63,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     tr::GpuTimings t;
-    tr::RenderResult r =
-        tr::render_with_raygen(scene, options, spirv_raygen, sizeof(spirv_raygen), tuning, &t);
+    tr::RenderResult r = tr::render_with_raygen(scene, options, tr::renderer_raygen(), tuning, &t);
     // Throughput over all dispatches, and after the first one, which may include the
     // driver's shader compilation (lavapipe compiles there).
     const double pixels = double(r.width) * r.height;

@@ -62,7 +62,7 @@ TEST(GpuHitProbe, ClosestHitsMatchAnalyticReference) {
   RenderOptions options;
   options.spp = 1;
   RenderResult result =
-      render_with_raygen(scene, options, spirv_hit_probe, sizeof(spirv_hit_probe));
+      render_with_raygen(scene, options, one_raygen(spirv_hit_probe, sizeof(spirv_hit_probe)));
   ASSERT_EQ(result.width, width);
   ASSERT_EQ(result.mean.size(), size_t(3) * width * height);
 
@@ -101,11 +101,13 @@ TEST(GpuHitProbe, OverlappedBatchesMergeExactly) {
   Scene scene = test::probe_scene(width, height);
   RenderOptions options;
   options.spp = 1;
-  RenderResult one = render_with_raygen(scene, options, spirv_hit_probe, sizeof(spirv_hit_probe));
+  RenderResult one =
+      render_with_raygen(scene, options, one_raygen(spirv_hit_probe, sizeof(spirv_hit_probe)));
   options.spp = spp;
   uint64_t progress_calls = 0;
   options.progress = [&](uint64_t, uint64_t) { ++progress_calls; };
-  RenderResult many = render_with_raygen(scene, options, spirv_hit_probe, sizeof(spirv_hit_probe));
+  RenderResult many =
+      render_with_raygen(scene, options, one_raygen(spirv_hit_probe, sizeof(spirv_hit_probe)));
   EXPECT_GE(progress_calls, 2u);
   EXPECT_EQ(many.stats.rays, uint64_t(spp) * width * height);
   ASSERT_EQ(one.mean.size(), many.mean.size());
