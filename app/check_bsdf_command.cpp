@@ -82,10 +82,12 @@ void parse_params(const std::string& text, std::map<std::string, std::vector<flo
 }
 
 std::string json_report(const std::string& file, const std::string& device,
-                        const validation::Report& report, double significance) {
+                        const std::string& convention, const validation::Report& report,
+                        double significance) {
   JsonWriter j;
   j.begin_object();
-  j.field("file", file).field("device", device).field("significance", significance);
+  j.field("file", file).field("device", device).field("convention", convention);
+  j.field("significance", significance);
   j.field("passed", report.passed());
   j.key("checks").begin_array();
   for (const validation::CheckResult& c : report.checks) {
@@ -228,7 +230,8 @@ int check_bsdf_command(int argc, char** argv) {
     std::cout << file << " on " << device.name() << ": " << grid.size() << " parameter set"
               << (grid.size() == 1 ? "" : "s") << ", " << outcome.evaluations
               << " device evaluations in " << outcome.batches << " batches, " << seconds
-              << " s; overall significance " << options.validation.significance << "\n";
+              << " s; overall significance " << options.validation.significance << "; convention "
+              << options.convention.label() << "\n";
     report.print(std::cout);
     for (const shader_bsdf::AgainstResult& a : outcome.against)
       std::cout << shader_bsdf::against_table(a);
@@ -250,8 +253,9 @@ int check_bsdf_command(int argc, char** argv) {
               << report.checks.size() << " checks passed\n";
     if (!json.empty()) {
       try {
-        write_text_file(
-            json, json_report(file, device.name(), report, options.validation.significance) + "\n");
+        write_text_file(json, json_report(file, device.name(), options.convention.label(), report,
+                                          options.validation.significance) +
+                                  "\n");
       } catch (const FileError& e) {
         std::fprintf(stderr, "twinray check-bsdf: cannot write the JSON report: %s\n", e.what());
         return kExitOutput;

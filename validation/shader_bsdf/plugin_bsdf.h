@@ -30,8 +30,7 @@ class PluginBsdf {
   PluginBsdf(const PluginBsdf&) = delete;
   PluginBsdf& operator=(const PluginBsdf&) = delete;
 
-  // "roughconductor alpha=0.3 distribution=ggx"
-  const std::string& label() const { return label_; }
+  // Named "roughconductor alpha=0.3 distribution=ggx", as given.
   twinray::validation::BsdfUnderTest under_test() const;
 
  private:
