@@ -1,5 +1,7 @@
 #include "render/write_result.h"
 
+#include <utility>
+
 #include "io/image.h"
 #include "render/error_estimate.h"
 
@@ -59,15 +61,21 @@ void write_result(const RenderResult& result, const OutputPaths& paths,
   meta["twinray:rejected_nonfinite"] = std::to_string(result.stats.rejected_nonfinite);
   meta["twinray:variance_estimate"] = variance_estimate_name(result.pass_size, result.spp);
 
-  Image mean = with_aovs(result, result.mean, result.aov_mean, aov_channels);
-  mean.metadata = meta;
-  Image var = with_aovs(result, result.variance, result.aov_variance, aov_channels);
-  var.metadata = meta;
-  var.metadata["twinray:content"] =
-      "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
-      "(twinray:variance_estimate says from what)";
-  write_exr(paths.image, mean, half);
-  write_exr(paths.variance, var, half);
+  // One image at a time, each freed before the next is built: the peak memory of a render is
+  // here, beside its film and result.
+  {
+    Image mean = with_aovs(result, result.mean, result.aov_mean, aov_channels);
+    mean.metadata = meta;
+    write_exr(paths.image, mean, half);
+  }
+  {
+    Image var = with_aovs(result, result.variance, result.aov_variance, aov_channels);
+    var.metadata = std::move(meta);
+    var.metadata["twinray:content"] =
+        "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
+        "(twinray:variance_estimate says from what)";
+    write_exr(paths.variance, var, half);
+  }
   write_png_srgb(paths.preview, to_image(result, result.mean));
 }
 
