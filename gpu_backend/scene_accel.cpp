@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "core/transform.h"
 #include "gpu_backend/gpu_error.h"
@@ -66,6 +67,7 @@ VkAabbPositionsKHR shape_bounds(const Shape& shape) {
 AccelerationStructure::AccelerationStructure(VulkanDevice& device,
                                              VkAccelerationStructureTypeKHR type, VkDeviceSize size)
     : device_(device),
+      size_(size),
       storage_(device, size,
                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
@@ -102,7 +104,8 @@ std::unique_ptr<AccelerationStructure> prepare(VulkanDevice& device, Build& buil
                                                VkDeviceSize& scratch_total) {
   build.info.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR;
   build.info.type = type;
-  build.info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  build.info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+                     VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR;
   build.info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
   build.info.geometryCount = static_cast<uint32_t>(build.geometries.size());
   build.info.pGeometries = build.geometries.data();
@@ -146,6 +149,128 @@ Buffer scratch_buffer(VulkanDevice& device, VkDeviceSize size) {
                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 }
 
+// Builds, compaction queries and compacting copies all access acceleration structures in the
+// ACCELERATION_STRUCTURE_BUILD stage (spec: vkCmdBuildAccelerationStructuresKHR,
+// vkCmdWriteAccelerationStructuresPropertiesKHR, vkCmdCopyAccelerationStructureKHR), so one
+// barrier orders each step's writes before the next step's reads and writes.
+void build_barrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &barrier, 0,
+                       nullptr, 0, nullptr);
+}
+
+// The two compaction entry points, which RayTracingFunctions does not load.
+struct CompactionFunctions {
+  PFN_vkCmdWriteAccelerationStructuresPropertiesKHR write_properties = nullptr;
+  PFN_vkCmdCopyAccelerationStructureKHR copy = nullptr;
+
+  explicit CompactionFunctions(VkDevice device) {
+    write_properties = reinterpret_cast<PFN_vkCmdWriteAccelerationStructuresPropertiesKHR>(
+        vkGetDeviceProcAddr(device, "vkCmdWriteAccelerationStructuresPropertiesKHR"));
+    copy = reinterpret_cast<PFN_vkCmdCopyAccelerationStructureKHR>(
+        vkGetDeviceProcAddr(device, "vkCmdCopyAccelerationStructureKHR"));
+    if (!write_properties)
+      throw GpuError("Vulkan entry point vkCmdWriteAccelerationStructuresPropertiesKHR not found");
+    if (!copy) throw GpuError("Vulkan entry point vkCmdCopyAccelerationStructureKHR not found");
+  }
+};
+
+class CompactedSizeQueries {
+ public:
+  CompactedSizeQueries(VulkanDevice& device, uint32_t count) : device_(device), count_(count) {
+    VkQueryPoolCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+    info.queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR;
+    info.queryCount = count;
+    vk_check(vkCreateQueryPool(device.handle(), &info, nullptr, &pool_),
+             "vkCreateQueryPool (acceleration-structure compacted sizes)");
+  }
+  ~CompactedSizeQueries() { vkDestroyQueryPool(device_.handle(), pool_, nullptr); }
+  CompactedSizeQueries(const CompactedSizeQueries&) = delete;
+  CompactedSizeQueries& operator=(const CompactedSizeQueries&) = delete;
+
+  VkQueryPool pool() const { return pool_; }
+
+  // Waits for the queries a completed submission wrote (64-bit results).
+  std::vector<VkDeviceSize> results() const {
+    std::vector<uint64_t> sizes(count_);
+    vk_check(vkGetQueryPoolResults(device_.handle(), pool_, 0, count_,
+                                   sizes.size() * sizeof(uint64_t), sizes.data(), sizeof(uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+             "vkGetQueryPoolResults (acceleration-structure compacted sizes)");
+    return std::vector<VkDeviceSize>(sizes.begin(), sizes.end());
+  }
+
+ private:
+  VulkanDevice& device_;
+  uint32_t count_;
+  VkQueryPool pool_ = VK_NULL_HANDLE;
+};
+
+// Builds `built` (prepared from `builds`) and returns the compacted size of each.
+std::vector<VkDeviceSize> build_and_query(
+    VulkanDevice& device, const CompactionFunctions& fn, std::vector<Build>& builds,
+    const std::vector<std::unique_ptr<AccelerationStructure>>& built, VkDeviceSize scratch_size) {
+  if (built.empty()) return {};
+  std::vector<VkAccelerationStructureKHR> handles;
+  for (const auto& as : built) handles.push_back(as->handle());
+  const uint32_t count = static_cast<uint32_t>(handles.size());
+  Buffer scratch = scratch_buffer(device, scratch_size);
+  CompactedSizeQueries queries(device, count);
+  device.submit_and_wait([&](VkCommandBuffer cmd) {
+    // Structures this build reads (the TLAS's BLASes) were written by earlier submissions.
+    build_barrier(cmd);
+    vkCmdResetQueryPool(cmd, queries.pool(), 0, count);
+    record_builds(device, cmd, builds, scratch);
+    build_barrier(cmd);
+    fn.write_properties(cmd, count, handles.data(),
+                        VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, queries.pool(), 0);
+  });
+  return queries.results();
+}
+
+// Copies each of `built` into a new structure of its compacted size and waits for the copies,
+// after which the originals may be freed. `what` names the structures in errors.
+std::vector<std::unique_ptr<AccelerationStructure>> compact(
+    VulkanDevice& device, const CompactionFunctions& fn, VkAccelerationStructureTypeKHR type,
+    const std::vector<std::unique_ptr<AccelerationStructure>>& built,
+    const std::vector<VkDeviceSize>& sizes, const char* what) {
+  std::vector<std::unique_ptr<AccelerationStructure>> compacted;
+  for (size_t i = 0; i < built.size(); ++i) {
+    // The compacted size is at most the built one (spec, vkCmdCopyAccelerationStructureKHR
+    // with the COMPACT mode); zero or a larger size means the query did not report one.
+    if (sizes[i] == 0 || sizes[i] > built[i]->size())
+      throw GpuError(std::string(what) + " " + std::to_string(i) + ": compacted size " +
+                     std::to_string(sizes[i]) + " is outside (0, " +
+                     std::to_string(built[i]->size()) + "], the built size");
+    compacted.push_back(std::make_unique<AccelerationStructure>(device, type, sizes[i]));
+  }
+  if (built.empty()) return compacted;
+  device.submit_and_wait([&](VkCommandBuffer cmd) {
+    build_barrier(cmd);  // the builds were an earlier submission
+    for (size_t i = 0; i < built.size(); ++i) {
+      VkCopyAccelerationStructureInfoKHR copy{};
+      copy.sType = VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR;
+      copy.src = built[i]->handle();
+      copy.dst = compacted[i]->handle();
+      copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
+      fn.copy(cmd, &copy);
+    }
+  });
+  return compacted;
+}
+
+VkDeviceSize total_size(const std::vector<std::unique_ptr<AccelerationStructure>>& structures) {
+  VkDeviceSize total = 0;
+  for (const auto& as : structures) total += as->size();
+  return total;
+}
+
 }  // namespace
 
 SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
@@ -158,7 +283,9 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
   Buffer aabb_buffer =
       upload_buffer(device, aabbs.data(), aabbs.size() * sizeof(VkAabbPositionsKHR), kBuildInput);
 
+  const CompactionFunctions fn(device.handle());
   std::vector<Build> blas_builds(layout.blases.size());
+  std::vector<std::unique_ptr<AccelerationStructure>> built;
   VkDeviceSize scratch_size = 0;
   size_t aabb_index = 0;
   for (size_t b = 0; b < layout.blases.size(); ++b) {
@@ -206,8 +333,16 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
       build.geometries.push_back(g);
       build.ranges.push_back(range);
     }
-    blases_.push_back(
+    built.push_back(
         prepare(device, build, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scratch_size));
+  }
+  {
+    std::vector<VkDeviceSize> sizes = build_and_query(device, fn, blas_builds, built, scratch_size);
+    blases_ =
+        compact(device, fn, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, built, sizes, "BLAS");
+    memory_.blas_built = total_size(built);
+    memory_.blas_compacted = total_size(blases_);
+    built.clear();
   }
 
   std::vector<VkAccelerationStructureInstanceKHR> instances;
@@ -245,23 +380,14 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
   range.primitiveCount = static_cast<uint32_t>(instances.size());
   tlas_build[0].ranges.push_back(range);
   VkDeviceSize tlas_scratch_size = 0;
-  tlas_ = prepare(device, tlas_build[0], VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                  tlas_scratch_size);
-
-  Buffer scratch = scratch_buffer(device, std::max(scratch_size, tlas_scratch_size));
-  device.submit_and_wait([&](VkCommandBuffer cmd) {
-    record_builds(device, cmd, blas_builds, scratch);
-    // The BLASes must be written before the TLAS build reads them and reuses the scratch.
-    VkMemoryBarrier barrier{};
-    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-    barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-    barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
-                            VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                         VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &barrier, 0,
-                         nullptr, 0, nullptr);
-    record_builds(device, cmd, tlas_build, scratch);
-  });
+  built.push_back(prepare(device, tlas_build[0], VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                          tlas_scratch_size));
+  std::vector<VkDeviceSize> sizes =
+      build_and_query(device, fn, tlas_build, built, tlas_scratch_size);
+  tlas_ = std::move(
+      compact(device, fn, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, built, sizes, "TLAS")[0]);
+  memory_.tlas_built = built[0]->size();
+  memory_.tlas_compacted = tlas_->size();
 }
 
 }  // namespace tr

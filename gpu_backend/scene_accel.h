@@ -4,6 +4,13 @@
 // each BLAS with its Instance.to_world; instanceCustomIndex is the Instance index and the
 // SBT offset selects the triangle (0) or procedural (1) hit group.
 //
+// Every structure is built with ALLOW_COMPACTION, its compacted size read back through a
+// VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR query, and copied with
+// VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR into a structure of that size; the
+// full-size originals are freed (Vulkan spec, VK_KHR_acceleration_structure: "Acceleration
+// Structure Queries" and vkCmdCopyAccelerationStructureKHR). The BLASes are compacted before
+// the TLAS is built, so the TLAS references only compacted BLASes.
+//
 // Geometry -> shape table (binding BINDING_GEOMETRY_SHAPES): entry i < TLAS instance count
 // is the table offset of TLAS instance i; the global shape index of geometry g of TLAS
 // instance i is table[table[i] + g].
@@ -48,12 +55,23 @@ class AccelerationStructure {
 
   VkAccelerationStructureKHR handle() const { return handle_; }
   VkDeviceAddress address() const { return address_; }
+  VkDeviceSize size() const { return size_; }
 
  private:
   VulkanDevice& device_;
+  VkDeviceSize size_;
   Buffer storage_;
   VkAccelerationStructureKHR handle_ = VK_NULL_HANDLE;
   VkDeviceAddress address_ = 0;
+};
+
+// Bytes of the acceleration structures (VkAccelerationStructureCreateInfoKHR::size): as built
+// (vkGetAccelerationStructureBuildSizesKHR) and as kept after compaction.
+struct AccelMemory {
+  VkDeviceSize blas_built = 0;
+  VkDeviceSize blas_compacted = 0;
+  VkDeviceSize tlas_built = 0;
+  VkDeviceSize tlas_compacted = 0;
 };
 
 class SceneAccel {
@@ -65,8 +83,10 @@ class SceneAccel {
   SceneAccel& operator=(const SceneAccel&) = delete;
 
   VkAccelerationStructureKHR tlas() const { return tlas_->handle(); }
+  const AccelMemory& memory() const { return memory_; }
 
  private:
+  AccelMemory memory_;
   std::vector<std::unique_ptr<AccelerationStructure>> blases_;
   std::unique_ptr<AccelerationStructure> tlas_;
 };
