@@ -45,6 +45,7 @@ Options:
                      scene as written, on the CPU):
                        integrator=path|direct  max_depth=N (-1 unbounded)  rr_depth=N|off
                        sampler=NAME   randomizations=K   backend=cpu|gpu  label=TEXT
+                       emitter_selection=uniform|power|bvh
                      e.g. --variant max_depth=3 --variant rr_depth=off,label=no-RR
   --budget SECONDS   time budget of each variant (required)
   --start-spp N      first rung of the spp ladder (default 1)

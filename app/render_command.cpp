@@ -25,6 +25,7 @@
 #include "render/error_estimate.h"
 #include "render/film_error.h"
 #include "render/write_result.h"
+#include "scenes/emitter_selection.h"
 #include "scenes/guide_aovs.h"
 #include "scenes/load_scene.h"
 #include "scenes/sampler.h"
@@ -36,7 +37,7 @@ namespace {
 const char* kUsage =
     "usage: twinray render SCENE [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
-    "                      [--randomizations K] [--aov LIST]\n"
+    "                      [--randomizations K] [--aov LIST] [--emitter-selection S]\n"
     "  Renders a Mitsuba 3 XML, .scn or glTF 2.0 (.gltf/.glb) scene (-D width, height, spp,\n"
     "  max_depth; scenes/README.md). Writes OUT.exr (mean radiance, RGB in the film's\n"
     "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
@@ -57,6 +58,11 @@ const char* kUsage =
     "                  position, uv, geo_normal, sh_normal, prim_index, shape_index. Refused\n"
     "                  when the scene's integrator is already aov or moment; --resume needs\n"
     "                  the same types\n"
+    "  --emitter-selection S  how a light sample chooses its emitter: uniform (Mitsuba's: by\n"
+    "                  sampling_weight, the default), power (by estimated power times\n"
+    "                  sampling_weight) or bvh (a light BVH by power, distance and\n"
+    "                  orientation from the shading point; scenes/emitter_selection.h). All\n"
+    "                  unbiased; they change the noise, hence the variance output\n"
     "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
@@ -128,6 +134,12 @@ RenderArgs parse(int argc, char** argv) {
       a.randomizations = args.uint_value(arg, 1);
     } else if (arg == "--resume") {
       a.resume = args.value(arg);
+    } else if (arg == "--emitter-selection") {
+      try {
+        a.load.emitter_selection = parse_emitter_selection(args.value(arg));
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--emitter-selection: ") + e.what());
+      }
     } else if (arg == "--aov") {
       a.aov_lists.push_back(args.value(arg));
     } else if (!arg.empty() && arg[0] == '-') {

@@ -1,5 +1,5 @@
-// Emitter sampling and evaluation over all emitters of the scene. One emitter is chosen
-// with probability proportional to its `sampling_weight` (the scene's emitter alias table),
+// Emitter sampling and evaluation over all emitters of the scene. One emitter is chosen by the
+// scene's emitter selection (EMITTER_SELECTION_*; Mitsuba's: proportional to `sampling_weight`)
 // then sampled by its own strategy; densities include the selection probability.
 #ifndef TWINRAY_CORE_EMITTER_H
 #define TWINRAY_CORE_EMITTER_H
@@ -13,15 +13,47 @@
 #include "core/emitters/projector.h"
 #include "core/emitters/spot.h"
 #include "core/interaction.h"
+#include "core/light_bvh.h"
 #include "core/rng.h"
 
 TR_NAMESPACE_BEGIN
+
+// Chooses the emitter a light sample from ref_p starts from, with its probability in pmf
+// (NO_INDEX when none can light ref_p). One 2D number whatever the selection: u.x picks, u.y is
+// an alias table's second choice.
+INLINE uint select_emitter(SceneGlobals g, vec3 ref_p, vec2 u, OUT(float) pmf) {
+  if (g.emitter_selection != EMITTER_SELECTION_BVH)
+    return alias_sample(g.emitter_alias_offset, g.emitter_count, u, pmf);
+  float p_inf = g.infinite_probability;
+  if (u.x < p_inf) {
+    u.x = min(u.x / p_inf, ONE_MINUS_EPSILON);
+    uint index = alias_sample(g.infinite_alias_offset, g.emitter_count, u, pmf);
+    pmf *= p_inf;
+    return index;
+  }
+  uint index = light_bvh_sample(g.light_root, ref_p,
+                                min((u.x - p_inf) / (1.0f - p_inf), ONE_MINUS_EPSILON), pmf);
+  pmf *= 1.0f - p_inf;
+  return index;
+}
+
+// The probability with which select_emitter chooses emitter `index` from ref_p.
+INLINE float emitter_pmf(SceneGlobals g, vec3 ref_p, uint index) {
+  if (g.emitter_selection != EMITTER_SELECTION_BVH) return alias_pmf(g.emitter_alias_offset, index);
+  float pmf = 0.0f;
+  if (g.infinite_probability > 0.0f)
+    pmf += g.infinite_probability * alias_pmf(g.infinite_alias_offset, index);
+  if (g.infinite_probability < 1.0f)
+    pmf += (1.0f - g.infinite_probability) * light_bvh_pmf(g.light_root, ref_p, index);
+  return pmf;
+}
 
 INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
   SceneGlobals g = scene_globals();
   if (g.emitter_count == 0u) return emitter_sample_failed();
   float pmf;
-  uint index = alias_sample(g.emitter_alias_offset, g.emitter_count, rng_next_2d(rng), pmf);
+  uint index = select_emitter(g, ref_p, rng_next_2d(rng), pmf);
+  if (index == NO_INDEX) return emitter_sample_failed();
   Emitter e = scene_emitter(index);
   EmitterSample s = emitter_sample_failed();
   if (TR_HAS_EMITTER(EMITTER_AREA) && e.type == EMITTER_AREA) {
@@ -51,7 +83,7 @@ INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
 // from ref_p.
 INLINE float pdf_emitter_surface(vec3 ref_p, SurfaceInteraction si) {
   Emitter e = scene_emitter(si.emitter);
-  return alias_pmf(scene_globals().emitter_alias_offset, si.emitter) *
+  return emitter_pmf(scene_globals(), ref_p, si.emitter) *
          pdf_area_emitter(e, ref_p, si.p, si.frame.n);
 }
 
@@ -75,7 +107,8 @@ INLINE float pdf_environment(vec3 d) {
   SceneGlobals g = scene_globals();
   if (g.environment == NO_INDEX) return 0.0f;
   Emitter e = scene_emitter(g.environment);
-  float pmf = alias_pmf(g.emitter_alias_offset, g.environment);
+  // An infinite emitter's selection does not depend on the reference point.
+  float pmf = emitter_pmf(g, vec3(0.0f), g.environment);
   if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT)
     return pmf * pdf_constant_emitter();
   if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP)

@@ -16,6 +16,7 @@ Texture scene_texture(uint index);
 vec4 scene_texel(uint index);
 Emitter scene_emitter(uint index);
 AliasEntry scene_alias(uint index);
+LightNode scene_light_node(uint index);
 Shape scene_shape(uint index);
 Instance scene_instance(uint index);
 vec3 scene_position(uint vertex);

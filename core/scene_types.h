@@ -160,6 +160,33 @@ struct AliasEntry {
   uint pad;
 };
 
+// ---- Emitter selection (core/emitter.h) ------------------------------------------------
+// Which emitter a light sample starts from. UNIFORM is Mitsuba's: the scene's alias table over
+// `sampling_weight` (uniform by default). POWER: an alias table over power times sampling_weight
+// (pbrt-v4's PowerLightSampler). BVH: a light BVH over the emitters with a position (Conty
+// Estevez & Kulla 2018; pbrt-v4 §12.6.3, BVHLightSampler), the infinite ones chosen apart.
+const uint EMITTER_SELECTION_UNIFORM = 0u;
+const uint EMITTER_SELECTION_POWER = 1u;
+const uint EMITTER_SELECTION_BVH = 2u;
+
+// A node of the light BVH (core/light_bvh.h): the bounds of the emitters below it, their
+// summed power phi, and a cone around w holding every direction of their surface normals (or
+// their emission axis) with half-angle acos(cos_theta_o); emission reaches at most
+// acos(cos_theta_e) beyond that cone. Node i < emitter count is emitter i's leaf (unused for
+// emitters outside the tree: parent NO_INDEX, not the root); interior nodes follow.
+struct LightNode {
+  vec3 bounds_min;
+  float phi;
+  vec3 bounds_max;
+  float cos_theta_o;
+  vec3 w;
+  float cos_theta_e;
+  uint child0;  // interior: the two children; leaves: NO_INDEX
+  uint child1;
+  uint parent;  // NO_INDEX at the root and for emitters outside the tree
+  uint pad;
+};
+
 // ---- Camera, film, integrator ----------------------------------------------------------
 const uint SENSOR_PERSPECTIVE = 0u;
 const uint SENSOR_THINLENS = 1u;
@@ -259,9 +286,16 @@ struct SceneGlobals {
   Camera camera;
   Integrator integrator;
   uint emitter_count;
-  uint emitter_alias_offset;  // emitter selection table, pmf proportional to sampling_weight
+  uint emitter_alias_offset;  // UNIFORM, POWER: the emitter selection table
   uint environment;           // the constant/envmap emitter, or NO_INDEX
   uint instance_count;
+  uint emitter_selection;  // EMITTER_SELECTION_*
+  // BVH: the root of the light BVH (NO_INDEX: no emitter has a position), the alias table
+  // choosing among the infinite emitters (constant, envmap, directional) by sampling_weight,
+  // and the probability of choosing an infinite emitter rather than the tree.
+  uint light_root;
+  uint infinite_alias_offset;
+  float infinite_probability;
   Sampler sampler_params;
 };
 

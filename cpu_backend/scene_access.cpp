@@ -16,6 +16,7 @@ Texture scene_texture(uint i) { return g_buffers->textures[i]; }
 vec4 scene_texel(uint i) { return g_buffers->texels[i]; }
 Emitter scene_emitter(uint i) { return g_buffers->emitters[i]; }
 AliasEntry scene_alias(uint i) { return g_buffers->alias[i]; }
+LightNode scene_light_node(uint i) { return g_buffers->light_nodes[i]; }
 Shape scene_shape(uint i) { return g_buffers->shapes[i]; }
 Instance scene_instance(uint i) { return g_buffers->instances[i]; }
 vec3 scene_position(uint v) { return vec3(g_buffers->positions[v]); }

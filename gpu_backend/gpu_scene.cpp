@@ -28,6 +28,7 @@ GpuScene::GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptor
   buffers_[BINDING_TEXELS] = upload_vector(device, scene.texels, storage);
   buffers_[BINDING_EMITTERS] = upload_vector(device, scene.emitters, storage);
   buffers_[BINDING_ALIAS] = upload_vector(device, scene.alias, storage);
+  buffers_[BINDING_LIGHT_NODES] = upload_vector(device, scene.light_nodes, storage);
   buffers_[BINDING_SHAPES] = upload_vector(device, scene.shapes, storage);
   buffers_[BINDING_INSTANCES] = upload_vector(device, scene.instances, storage);
   buffers_[BINDING_POSITIONS] = upload_vector(device, scene.positions, build_input);

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "io/temp_file.h"
+#include "scenes/emitter_selection.h"
 #include "scenes/gltf/gltf_import.h"
 #include "scenes/plugins.h"
 #include "scenes/scene_builder.h"
@@ -105,7 +106,9 @@ Scene SceneBuilder::build() {
   return std::move(scene_);
 }
 
-Scene load_scene(const std::string& path, const LoadOptions& options) {
+namespace {
+
+Scene build_scene(const std::string& path, const LoadOptions& options) {
   if (is_scn(path)) {
     TemporaryDirectory meshes;
     ScnScene scn = import_scn(path, options, meshes.path(), "scn", false);
@@ -129,6 +132,14 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
   if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*parsed.root, options.guide_aovs);
   SceneBuilder builder(std::move(parsed), path);
   return builder.build();
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const LoadOptions& options) {
+  Scene scene = build_scene(path, options);
+  use_emitter_selection(scene.buffers, options.emitter_selection);
+  return scene;
 }
 
 }  // namespace tr

@@ -19,6 +19,8 @@ struct LoadOptions {
   // --aov: when not empty, the scene's integrator is wrapped in an `aov` integrator with these
   // output variables (scenes/guide_aovs.h), whatever the scene's format.
   std::vector<GuideAov> guide_aovs;
+  // --emitter-selection: EMITTER_SELECTION_* (scenes/emitter_selection.h); Mitsuba's by default.
+  uint emitter_selection = EMITTER_SELECTION_UNIFORM;
 };
 
 // Parses and builds the scene: a Mitsuba 3 XML file or, by the extension, a `.scn` JSON scene

@@ -24,7 +24,8 @@ struct SceneBuffers {
   std::vector<Texture> textures;
   std::vector<vec4> texels;  // linear RGBA, all bitmaps back to back
   std::vector<Emitter> emitters;
-  std::vector<AliasEntry> alias;  // every alias table back to back
+  std::vector<AliasEntry> alias;       // every alias table back to back
+  std::vector<LightNode> light_nodes;  // EMITTER_SELECTION_BVH: the light BVH
   std::vector<Shape> shapes;
   std::vector<Instance> instances;  // instance 0: the top level, identity transform
   std::vector<vec4> positions;      // world space (object space inside shapegroups)

@@ -13,6 +13,7 @@ std::string scene_digest(const Scene& scene) {
   f.add_vector(b.texels);
   f.add_vector(b.emitters);
   f.add_vector(b.alias);
+  f.add_vector(b.light_nodes);
   f.add_vector(b.shapes);
   f.add_vector(b.instances);
   f.add_vector(b.positions);

@@ -12,6 +12,7 @@ layout(std430, set = 0, binding = BINDING_TEXTURES) readonly buffer TextureBuffe
 layout(std430, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer { vec4 g_texels[]; };
 layout(std430, set = 0, binding = BINDING_EMITTERS) readonly buffer EmitterBuffer { Emitter g_emitters[]; };
 layout(std430, set = 0, binding = BINDING_ALIAS) readonly buffer AliasBuffer { AliasEntry g_alias[]; };
+layout(std430, set = 0, binding = BINDING_LIGHT_NODES) readonly buffer LightNodeBuffer { LightNode g_light_nodes[]; };
 layout(std430, set = 0, binding = BINDING_SHAPES) readonly buffer ShapeBuffer { Shape g_shapes[]; };
 layout(std430, set = 0, binding = BINDING_INSTANCES) readonly buffer InstanceBuffer { Instance g_instances[]; };
 layout(std430, set = 0, binding = BINDING_POSITIONS) readonly buffer PositionBuffer { vec4 g_positions[]; };
@@ -27,6 +28,7 @@ Texture scene_texture(uint i) { return g_textures[i]; }
 vec4 scene_texel(uint i) { return g_texels[i]; }
 Emitter scene_emitter(uint i) { return g_emitters[i]; }
 AliasEntry scene_alias(uint i) { return g_alias[i]; }
+LightNode scene_light_node(uint i) { return g_light_nodes[i]; }
 Shape scene_shape(uint i) { return g_shapes[i]; }
 Instance scene_instance(uint i) { return g_instances[i]; }
 vec3 scene_position(uint v) { return g_positions[v].xyz; }

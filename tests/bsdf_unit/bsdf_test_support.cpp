@@ -163,6 +163,7 @@ Texture scene_texture(uint index) { return test::test_scene().textures.at(index)
 vec4 scene_texel(uint index) { return test::test_scene().texels.at(index); }
 Emitter scene_emitter(uint) { not_in_bsdf_tests("scene_emitter"); }
 AliasEntry scene_alias(uint) { not_in_bsdf_tests("scene_alias"); }
+LightNode scene_light_node(uint) { not_in_bsdf_tests("scene_light_node"); }
 Shape scene_shape(uint) { not_in_bsdf_tests("scene_shape"); }
 Instance scene_instance(uint) { not_in_bsdf_tests("scene_instance"); }
 vec3 scene_position(uint) { not_in_bsdf_tests("scene_position"); }

@@ -22,6 +22,7 @@ Texture scene_texture(uint) { unreachable("texture"); }
 vec4 scene_texel(uint) { unreachable("texel"); }
 Emitter scene_emitter(uint) { unreachable("emitter"); }
 AliasEntry scene_alias(uint) { unreachable("alias"); }
+LightNode scene_light_node(uint) { unreachable("light node"); }
 Shape scene_shape(uint) { unreachable("shape"); }
 Instance scene_instance(uint) { unreachable("instance"); }
 vec3 scene_position(uint) { unreachable("position"); }

@@ -4,9 +4,10 @@
 // for every surface point of an area emitter along the direction that faces the reference
 // point, the selection pmf times pdf_area_emitter. Covers every area-emitter shape (mesh
 // triangles, sphere from outside and inside, disk, cylinder), the constant and envmap
-// emitters and a mixture chosen by sampling_weight. Point and directional emitters are
-// Dirac deltas with nothing to bin. Each case runs at the Šidák level of 1% over all cases
-// and prints its p-value.
+// emitters, a mixture chosen by sampling_weight, and the opt-in selections (power, light BVH;
+// scenes/emitter_selection.h) over mixtures. Point and directional emitters are Dirac deltas
+// with nothing to bin (they take their share of the choices all the same). Each case runs at the
+// Šidák level of 1% over all cases and prints its p-value.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -31,9 +32,25 @@ struct EmitterCase {
   std::string name;
   std::string body;  // the <scene> element's content
   glm::dvec3 ref_p;
+  uint selection = EMITTER_SELECTION_UNIFORM;
 };
 
 const std::string kMuseum = std::string(TWINRAY_MITSUBA_TEXTURES) + "/museum.exr";
+
+// Emitters of every kind with a position and an environment, weighted by sampling_weight.
+const std::string kMixture =
+    R"(<shape type="sphere"><point name="center" x="0.5" y="0.3" z="0.4"/>
+       <float name="radius" value="0.3"/><emitter type="area"><rgb name="radiance" value="3"/>
+       <float name="sampling_weight" value="2"/></emitter></shape>
+       <shape type="disk"><transform name="to_world"><scale value="0.4"/><rotate y="1" angle="-150"/>
+       <translate x="0.5" z="0.8"/></transform><emitter type="area"/></shape>
+       <shape type="rectangle"><transform name="to_world"><scale x="0.5" y="0.3"/>
+       <translate z="-1"/></transform><emitter type="area"><rgb name="radiance" value="0.2"/>
+       </emitter></shape>
+       <emitter type="point"><point name="position" x="-1" y="0.5" z="0"/></emitter>
+       <emitter type="spot"><transform name="to_world"><lookat origin="0, 2, 0" target="0, 0, 0"/>
+       </transform></emitter>
+       <emitter type="constant"><float name="sampling_weight" value="0.5"/></emitter>)";
 
 const std::vector<EmitterCase>& cases() {
   static const std::vector<EmitterCase> list = {
@@ -80,6 +97,8 @@ const std::vector<EmitterCase>& cases() {
           <emitter type="envmap"><string name="filename" value=")" +
            kMuseum + R"("/><float name="sampling_weight" value="0.5"/></emitter>)",
        {0.0, 0.0, 0.0}},
+      {"mixture_by_power", kMixture, {0.1, -0.2, 0.3}, EMITTER_SELECTION_POWER},
+      {"mixture_by_light_bvh", kMixture, {0.1, -0.2, 0.3}, EMITTER_SELECTION_BVH},
   };
   return list;
 }
@@ -90,7 +109,9 @@ Scene load_case(const EmitterCase& c) {
   std::filesystem::path file = dir / (c.name + ".xml");
   std::ofstream(file) << "<scene version=\"3.0.0\"><sensor type=\"perspective\"/>" << c.body
                       << "</scene>\n";
-  return load_scene(file.string(), LoadOptions());
+  LoadOptions options;
+  options.emitter_selection = c.selection;
+  return load_scene(file.string(), options);
 }
 
 uint bits_of(float x) {
@@ -108,7 +129,7 @@ double direction_pdf(const SceneBuffers& b, const glm::dvec3& ref_p, const glm::
   for (uint i = 0; i < b.emitters.size(); ++i) {
     const Emitter& e = b.emitters[i];
     if (e.type != EMITTER_AREA) continue;
-    double pmf = alias_pmf(b.globals.emitter_alias_offset, i);
+    double pmf = emitter_pmf(b.globals, vec3(ref_p), i);
     for (const SurfaceHit& h : surface_hits(b, b.shapes[e.shape], ref_p, w))
       if (glm::dot(h.n, w) < 0.0) {
         double dist2 = glm::dot(h.p - ref_p, h.p - ref_p);

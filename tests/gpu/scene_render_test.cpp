@@ -16,7 +16,11 @@
 namespace tr {
 namespace {
 
-Scene load(const std::string& path) { return load_scene(path, LoadOptions{}); }
+Scene load(const std::string& path, uint emitter_selection = EMITTER_SELECTION_UNIFORM) {
+  LoadOptions options;
+  options.emitter_selection = emitter_selection;
+  return load_scene(path, options);
+}
 
 std::string mitsuba_scene(const std::string& name) {
   return std::string(TWINRAY_SHARED_DIR) + "/mitsuba-tests/tests/scenes/" + name;
@@ -26,8 +30,9 @@ std::string cpu_test_scene(const std::string& name) {
   return std::string(TWINRAY_CPU_TEST_SCENES) + "/" + name;
 }
 
-void expect_lockstep(const std::string& path, uint32_t spp, uint32_t seed) {
-  Scene scene = load(path);
+void expect_lockstep(const std::string& path, uint32_t spp, uint32_t seed,
+                     uint emitter_selection = EMITTER_SELECTION_UNIFORM) {
+  Scene scene = load(path, emitter_selection);
   RenderOptions options;
   options.spp = spp;
   options.seed = seed;
@@ -95,6 +100,16 @@ TEST(GpuLockstep, FurnaceDielectricPath) {
 
 TEST(GpuLockstep, PathLengthWindow) {
   expect_lockstep(cpu_test_scene("path_length_window.xml"), 4, 1);
+}
+
+// The opt-in emitter selections (scenes/emitter_selection.h): the light BVH's descent and
+// probabilities, and the power table, in the shaders as on the CPU.
+TEST(GpuLockstep, ManyEmittersByLightBvh) {
+  expect_lockstep(cpu_test_scene("many_emitters.xml"), 16, 3, EMITTER_SELECTION_BVH);
+}
+
+TEST(GpuLockstep, ManyEmittersByPower) {
+  expect_lockstep(cpu_test_scene("many_emitters.xml"), 16, 3, EMITTER_SELECTION_POWER);
 }
 
 TEST(GpuLockstep, AmbientOcclusionPlanes) {

@@ -3,6 +3,7 @@
 #include <climits>
 #include <sstream>
 
+#include "scenes/emitter_selection.h"
 #include "scenes/sampler.h"
 
 namespace tr {
@@ -48,6 +49,12 @@ RenderVariant parse_variant(const std::string& spec) {
       uint type = 0;
       if (!sampler_type_of(value, type)) throw VariantError("unknown sampler '" + value + "'");
       v.sampler = type;
+    } else if (key == "emitter_selection") {
+      try {
+        v.emitter_selection = parse_emitter_selection(value);
+      } catch (const std::invalid_argument& e) {
+        throw VariantError(e.what());
+      }
     } else if (key == "randomizations") {
       v.randomizations = uint(parse_int(key, value, 1));
     } else if (key == "backend") {
@@ -74,6 +81,7 @@ Scene apply_variant(const Scene& scene, const RenderVariant& variant) {
   if (variant.max_depth) it.max_depth = *variant.max_depth;
   if (variant.rr_depth) it.rr_depth = *variant.rr_depth;
   if (variant.sampler) set_sampler(s, *variant.sampler, s.spp, true);
+  if (variant.emitter_selection) use_emitter_selection(s.buffers, *variant.emitter_selection);
   return s;
 }
 

@@ -7,6 +7,8 @@
 //   max_depth=N              -1 for unbounded (Mitsuba semantics: 2 = direct lighting only)
 //   rr_depth=N|off           depth at which Russian roulette starts; off never starts it
 //   sampler=NAME             the scene's sampler replaced by NAME (scenes/sampler.h), jitter on
+//   emitter_selection=uniform|power|bvh  how light samples choose an emitter
+//                            (scenes/emitter_selection.h; the scene is loaded with Mitsuba's)
 //   randomizations=K         each render's samples as K passes of the (correlated) sampler,
 //                            whose spread is its error estimate (render/error_estimate.h)
 //   backend=cpu|gpu
@@ -30,8 +32,9 @@ struct RenderVariant {
   std::string backend = "cpu";
   std::optional<uint> integrator;  // INTEGRATOR_*
   std::optional<int> max_depth, rr_depth;
-  std::optional<uint> sampler;         // SAMPLER_*
-  std::optional<uint> randomizations;  // passes a render (scenes/sampler.h)
+  std::optional<uint> sampler;            // SAMPLER_*
+  std::optional<uint> randomizations;     // passes a render (scenes/sampler.h)
+  std::optional<uint> emitter_selection;  // EMITTER_SELECTION_*
 };
 
 // Throws VariantError naming the bad field.

@@ -49,6 +49,7 @@ Texture scene_texture(uint index) { return textures.at(index); }
 vec4 scene_texel(uint index) { return texels.at(index); }
 Emitter scene_emitter(uint) { out_of_scope("scene_emitter"); }
 AliasEntry scene_alias(uint) { out_of_scope("scene_alias"); }
+LightNode scene_light_node(uint) { out_of_scope("scene_light_node"); }
 Shape scene_shape(uint) { out_of_scope("scene_shape"); }
 Instance scene_instance(uint) { out_of_scope("scene_instance"); }
 vec3 scene_position(uint) { out_of_scope("scene_position"); }
