@@ -164,22 +164,6 @@ void build_barrier(VkCommandBuffer cmd) {
                        nullptr, 0, nullptr);
 }
 
-// The two compaction entry points, which RayTracingFunctions does not load.
-struct CompactionFunctions {
-  PFN_vkCmdWriteAccelerationStructuresPropertiesKHR write_properties = nullptr;
-  PFN_vkCmdCopyAccelerationStructureKHR copy = nullptr;
-
-  explicit CompactionFunctions(VkDevice device) {
-    write_properties = reinterpret_cast<PFN_vkCmdWriteAccelerationStructuresPropertiesKHR>(
-        vkGetDeviceProcAddr(device, "vkCmdWriteAccelerationStructuresPropertiesKHR"));
-    copy = reinterpret_cast<PFN_vkCmdCopyAccelerationStructureKHR>(
-        vkGetDeviceProcAddr(device, "vkCmdCopyAccelerationStructureKHR"));
-    if (!write_properties)
-      throw GpuError("Vulkan entry point vkCmdWriteAccelerationStructuresPropertiesKHR not found");
-    if (!copy) throw GpuError("Vulkan entry point vkCmdCopyAccelerationStructureKHR not found");
-  }
-};
-
 class CompactedSizeQueries {
  public:
   CompactedSizeQueries(VulkanDevice& device, uint32_t count) : device_(device), count_(count) {
@@ -214,7 +198,7 @@ class CompactedSizeQueries {
 
 // Builds `built` (prepared from `builds`) and returns the compacted size of each.
 std::vector<VkDeviceSize> build_and_query(
-    VulkanDevice& device, const CompactionFunctions& fn, std::vector<Build>& builds,
+    VulkanDevice& device, std::vector<Build>& builds,
     const std::vector<std::unique_ptr<AccelerationStructure>>& built, VkDeviceSize scratch_size) {
   if (built.empty()) return {};
   std::vector<VkAccelerationStructureKHR> handles;
@@ -228,8 +212,9 @@ std::vector<VkDeviceSize> build_and_query(
     vkCmdResetQueryPool(cmd, queries.pool(), 0, count);
     record_builds(device, cmd, builds, scratch);
     build_barrier(cmd);
-    fn.write_properties(cmd, count, handles.data(),
-                        VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, queries.pool(), 0);
+    device.rt().cmd_write_acceleration_structure_properties(
+        cmd, count, handles.data(), VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
+        queries.pool(), 0);
   });
   return queries.results();
 }
@@ -237,7 +222,7 @@ std::vector<VkDeviceSize> build_and_query(
 // Copies each of `built` into a new structure of its compacted size and waits for the copies,
 // after which the originals may be freed. `what` names the structures in errors.
 std::vector<std::unique_ptr<AccelerationStructure>> compact(
-    VulkanDevice& device, const CompactionFunctions& fn, VkAccelerationStructureTypeKHR type,
+    VulkanDevice& device, VkAccelerationStructureTypeKHR type,
     const std::vector<std::unique_ptr<AccelerationStructure>>& built,
     const std::vector<VkDeviceSize>& sizes, const char* what) {
   std::vector<std::unique_ptr<AccelerationStructure>> compacted;
@@ -259,7 +244,7 @@ std::vector<std::unique_ptr<AccelerationStructure>> compact(
       copy.src = built[i]->handle();
       copy.dst = compacted[i]->handle();
       copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
-      fn.copy(cmd, &copy);
+      device.rt().cmd_copy_acceleration_structure(cmd, &copy);
     }
   });
   return compacted;
@@ -283,7 +268,6 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
   Buffer aabb_buffer =
       upload_buffer(device, aabbs.data(), aabbs.size() * sizeof(VkAabbPositionsKHR), kBuildInput);
 
-  const CompactionFunctions fn(device.handle());
   std::vector<Build> blas_builds(layout.blases.size());
   std::vector<std::unique_ptr<AccelerationStructure>> built;
   VkDeviceSize scratch_size = 0;
@@ -337,9 +321,9 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
         prepare(device, build, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scratch_size));
   }
   {
-    std::vector<VkDeviceSize> sizes = build_and_query(device, fn, blas_builds, built, scratch_size);
+    std::vector<VkDeviceSize> sizes = build_and_query(device, blas_builds, built, scratch_size);
     blases_ =
-        compact(device, fn, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, built, sizes, "BLAS");
+        compact(device, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, built, sizes, "BLAS");
     memory_.blas_built = total_size(built);
     memory_.blas_compacted = total_size(blases_);
     built.clear();
@@ -382,10 +366,9 @@ SceneAccel::SceneAccel(VulkanDevice& device, const SceneBuffers& scene,
   VkDeviceSize tlas_scratch_size = 0;
   built.push_back(prepare(device, tlas_build[0], VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
                           tlas_scratch_size));
-  std::vector<VkDeviceSize> sizes =
-      build_and_query(device, fn, tlas_build, built, tlas_scratch_size);
+  std::vector<VkDeviceSize> sizes = build_and_query(device, tlas_build, built, tlas_scratch_size);
   tlas_ = std::move(
-      compact(device, fn, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, built, sizes, "TLAS")[0]);
+      compact(device, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, built, sizes, "TLAS")[0]);
   memory_.tlas_built = built[0]->size();
   memory_.tlas_compacted = tlas_->size();
 }

@@ -60,6 +60,9 @@ VulkanDevice::VulkanDevice(VulkanInstance& instance, const DeviceInfo& info)
     load(device_, rt_.destroy_acceleration_structure, "vkDestroyAccelerationStructureKHR");
     load(device_, rt_.get_build_sizes, "vkGetAccelerationStructureBuildSizesKHR");
     load(device_, rt_.cmd_build_acceleration_structures, "vkCmdBuildAccelerationStructuresKHR");
+    load(device_, rt_.cmd_write_acceleration_structure_properties,
+         "vkCmdWriteAccelerationStructuresPropertiesKHR");
+    load(device_, rt_.cmd_copy_acceleration_structure, "vkCmdCopyAccelerationStructureKHR");
     load(device_, rt_.get_acceleration_structure_address,
          "vkGetAccelerationStructureDeviceAddressKHR");
     load(device_, rt_.create_ray_tracing_pipelines, "vkCreateRayTracingPipelinesKHR");
