@@ -21,29 +21,27 @@ INLINE float sin_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
 }
 
 // Importance of a node for reference point p (pbrt-v4 LightBounds::Importance): its power over
-// the squared distance to its centre (clamped to half its diagonal), times the cosine of the
-// smallest angle between the direction from the node to p and the node's emission cone, once
-// widened by the angle its bounds subtend from p. Zero only where nothing below the node can
-// send light towards p.
+// the squared distance to its centre (clamped to its radius, half its box's diagonal), times the
+// cosine of the smallest angle between the direction from the node to p and the node's emission
+// cone, once widened by the angle theta_b its sphere subtends from p. Zero only where nothing
+// below the node can send light towards p.
 INLINE float light_node_importance(LightNode n, vec3 p) {
-  vec3 centre = 0.5f * (n.bounds_min + n.bounds_max);
-  vec3 v = p - centre;
+  vec3 v = p - n.centre;
   float d2 = dot(v, v);
-  float radius2 = 0.25f * dot(n.bounds_max - n.bounds_min, n.bounds_max - n.bounds_min);
   float cos_theta_p = 1.0f;
-  // Outside the bounding sphere: the widened angle; inside it every direction is possible.
-  if (d2 > radius2) {
-    float cos_theta_w = dot(n.w, v * inversesqrt(d2));
+  // Outside the sphere: the widened angle; inside it every direction is possible.
+  if (d2 > n.radius * n.radius) {
+    float inv_d = inversesqrt(d2);
+    float cos_theta_w = dot(n.w, v) * inv_d;
     float sin_theta_w = safe_sqrt(1.0f - cos_theta_w * cos_theta_w);
-    float sin_theta_o = safe_sqrt(1.0f - n.cos_theta_o * n.cos_theta_o);
-    float cos_theta_b = safe_sqrt(1.0f - radius2 / d2);
-    float sin_theta_b = safe_sqrt(1.0f - cos_theta_b * cos_theta_b);
-    float cos_theta_x = cos_sub_clamped(sin_theta_w, cos_theta_w, sin_theta_o, n.cos_theta_o);
-    float sin_theta_x = sin_sub_clamped(sin_theta_w, cos_theta_w, sin_theta_o, n.cos_theta_o);
+    float sin_theta_b = n.radius * inv_d;
+    float cos_theta_b = safe_sqrt(1.0f - sin_theta_b * sin_theta_b);
+    float cos_theta_x = cos_sub_clamped(sin_theta_w, cos_theta_w, n.sin_theta_o, n.cos_theta_o);
+    float sin_theta_x = sin_sub_clamped(sin_theta_w, cos_theta_w, n.sin_theta_o, n.cos_theta_o);
     cos_theta_p = cos_sub_clamped(sin_theta_x, cos_theta_x, sin_theta_b, cos_theta_b);
     if (cos_theta_p <= n.cos_theta_e) return 0.0f;
   }
-  return n.phi * cos_theta_p / max(d2, sqrt(radius2));
+  return n.phi * cos_theta_p / max(d2, n.radius);
 }
 
 // The probability of the child `first` (child0 when true) at an interior node, from the two

@@ -169,22 +169,24 @@ const uint EMITTER_SELECTION_UNIFORM = 0u;
 const uint EMITTER_SELECTION_POWER = 1u;
 const uint EMITTER_SELECTION_BVH = 2u;
 
-// A node of the light BVH (core/light_bvh.h): the bounds of the emitters below it, their
-// summed power phi, and a cone around w holding every direction of their surface normals (or
-// their emission axis) with half-angle acos(cos_theta_o); emission reaches at most
-// acos(cos_theta_e) beyond that cone. Node i < emitter count is emitter i's leaf (unused for
-// emitters outside the tree: parent NO_INDEX, not the root); interior nodes follow.
+// A node of the light BVH (core/light_bvh.h): a sphere holding the emitters below it (around
+// their bounding box), their summed power phi, and a cone around w holding every direction of
+// their surface normals (or their emission axis) with half-angle theta_o; emission reaches at
+// most theta_e beyond that cone. Node i < emitter count is emitter i's leaf (unused for emitters
+// outside the tree: parent NO_INDEX, not the root); interior nodes follow.
 struct LightNode {
-  vec3 bounds_min;
-  float phi;
-  vec3 bounds_max;
-  float cos_theta_o;
+  vec3 centre;
+  float radius;
   vec3 w;
+  float phi;
+  float cos_theta_o;
+  float sin_theta_o;
   float cos_theta_e;
   uint child0;  // interior: the two children; leaves: NO_INDEX
   uint child1;
   uint parent;  // NO_INDEX at the root and for emitters outside the tree
-  uint pad;
+  uint pad0;
+  uint pad1;
 };
 
 // ---- Camera, film, integrator ----------------------------------------------------------

@@ -69,11 +69,18 @@ double split_cost(const Bounds& b, const Bounds& node, int axis) {
 
 LightNode to_node(const Bounds& b) {
   LightNode n{};
-  n.bounds_min = vec3(round_down(b.lo.x), round_down(b.lo.y), round_down(b.lo.z));
-  n.bounds_max = vec3(round_up(b.hi.x), round_up(b.hi.y), round_up(b.hi.z));
+  // The sphere around the float centre that holds every corner of the box.
+  n.centre = vec3(0.5 * (b.lo + b.hi));
+  const glm::dvec3 c(n.centre);
+  const glm::dvec3 far = glm::max(glm::abs(b.lo - c), glm::abs(b.hi - c));
+  n.radius = round_up(glm::length(far));
   n.phi = float(b.phi);
   n.w = vec3(b.normals.w);
+  // Rounded to the side of the wider cone: cos theta_o down; sin theta_o up, which raises the
+  // cosine of theta_w - theta_o that the importance takes outside the cone.
+  const double theta_o = std::acos(std::clamp(b.normals.cos_theta, -1.0, 1.0));
   n.cos_theta_o = std::max(round_down(b.normals.cos_theta), -1.0f);
+  n.sin_theta_o = std::min(round_up(std::sin(theta_o)), 1.0f);
   n.cos_theta_e = std::max(round_down(b.cos_theta_e), -1.0f);
   n.child0 = n.child1 = n.parent = NO_INDEX;
   return n;
