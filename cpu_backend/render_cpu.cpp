@@ -11,6 +11,7 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "core/integrator.h"
@@ -18,6 +19,7 @@
 #include "cpu_backend/bound_scene.h"
 #include "cpu_backend/embree_scene.h"
 #include "render/film_moments.h"
+#include "render/film_state.h"
 #include "render/pass_size.h"
 
 namespace tr {
@@ -30,20 +32,38 @@ struct ThreadCounts {
   std::uint64_t rejected = 0;
 };
 
-// Adds one sample to a pixel's moments and, with passes (pass_size > 0), to its pass in progress.
-template <typename Vec3>
-void add_film_sample(FilmMoments& m, bool negative, const Vec3& L, uint pass_size) {
-  add_sample(negative ? m.negative : m.positive, L);
-  if (pass_size > 0u) add_to_pass(m.passes, negative ? -1.0 : 1.0, 1.0, L);
-}
+// One render() call's film: accumulator i of `pixels` or `aovs` gets its samples, and the
+// negative groups are allocated when the first negative sample arrives (a filter with negative
+// lobes, core/film.h), by one thread while the others wait (std::call_once), so that a film
+// without negative samples holds none.
+struct FilmTarget {
+  FilmMomentArray& pixels;
+  FilmMomentArray& aovs;
+  uint pass_size;
+  std::once_flag negative_once;
+
+  void add(FilmMomentArray& a, size_t i, bool negative, const vec3& L) {
+    if (negative) {
+      std::call_once(negative_once, [this] {
+        pixels.keep_negative();
+        aovs.keep_negative();
+      });
+      add_sample(a.negative(i), L);
+    } else {
+      add_sample(a.positive(i), L);
+    }
+    if (pass_size > 0u) add_to_pass(a.passes(i), negative ? -1.0 : 1.0, 1.0, L);
+  }
+};
 
 // Samples [first, first + count) of one pixel, in order, added to its moments in double
 // (render/film_moments.h); sample i ends a pass when (i + 1) % pass_size == 0.
 // With AOVs (core/integrators/aov.h) the camera ray is traced before the integrator runs, and
 // its hit serves the integrator's first step.
-void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count, uint seed,
-                  uint pass_size, FilmMoments& m, FilmMoments* aovs, ThreadCounts& counts) {
+void render_pixel(const EmbreeScene& accel, uvec2 pixel, size_t index, uint first, uint count,
+                  uint seed, FilmTarget& film, ThreadCounts& counts) {
   const Integrator it = scene_globals().integrator;
+  const uint pass_size = film.pass_size;
   for (uint i = first; i < first + count; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
     bool camera_hit_pending = false;
@@ -54,8 +74,8 @@ void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count,
       camera_hit_pending = true;
       AovPoint a = aov_point(s.ray, camera_hit);
       for (uint k = 0; k < it.aov_count; ++k)
-        add_film_sample(aovs[k], integrator_negative(s), aov_value(scene_aov_type(k), a),
-                        pass_size);
+        film.add(film.aovs, index * it.aov_count + k, integrator_negative(s),
+                 aov_value(scene_aov_type(k), a));
     }
     while (integrator_alive(s)) {
       Hit hit = camera_hit_pending ? camera_hit : accel.intersect(s.ray);
@@ -72,10 +92,10 @@ void render_pixel(const EmbreeScene& accel, uvec2 pixel, uint first, uint count,
       ++counts.rejected;
       L = vec3(0.0f);
     }
-    add_film_sample(m, integrator_negative(s), L, pass_size);
+    film.add(film.pixels, index, integrator_negative(s), L);
     if (pass_size > 0u && (i + 1u) % pass_size == 0u) {
-      end_pass(m.passes);
-      for (uint k = 0; k < it.aov_count; ++k) end_pass(aovs[k].passes);
+      end_pass(film.pixels.passes(index));
+      for (uint k = 0; k < it.aov_count; ++k) end_pass(film.aovs.passes(index * it.aov_count + k));
     }
   }
 }
@@ -104,15 +124,18 @@ class CpuRenderer final : public Renderer {
     std::atomic<std::uint64_t> done{0};
     std::mutex progress_mutex;
     tbb::combinable<ThreadCounts> counts;
+    if (film.pass_size > 0 && !film.pixels.has_passes())
+      throw std::logic_error("render_cpu: a film of pass size " + std::to_string(film.pass_size) +
+                             " without pass moments (render/film_state.h empty_film)");
+    FilmTarget target{film.pixels, film.aovs, film.pass_size, {}};
     tbb::parallel_for(
         tbb::blocked_range2d<uint>(0, film.height, kTileSize, 0, film.width, kTileSize),
         [&](const tbb::blocked_range2d<uint>& tile) {
           ThreadCounts& local = counts.local();
           for (uint y = tile.rows().begin(); y != tile.rows().end(); ++y)
             for (uint x = tile.cols().begin(); x != tile.cols().end(); ++x)
-              render_pixel(*accel_, uvec2(x, y), first, count, seed_, film.pass_size,
-                           film.pixels[size_t(y) * film.width + x],
-                           film.aovs.data() + (size_t(y) * film.width + x) * film.aov_count, local);
+              render_pixel(*accel_, uvec2(x, y), size_t(y) * film.width + x, first, count, seed_,
+                           target, local);
           std::uint64_t now = done +=
               std::uint64_t(tile.rows().size()) * tile.cols().size() * count;
           if (progress) {

@@ -1,19 +1,29 @@
 #include "gpu_backend/variance_merge.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace tr {
 
-MomentAccumulator::MomentAccumulator(std::size_t pixels) : pixels_(pixels) {}
+MomentAccumulator::MomentAccumulator(std::size_t pixels) : pixels_(pixels, false) {}
 
 void merge_batches(const PixelBatch* batch, std::uint32_t first, std::uint32_t n_b,
-                   std::uint32_t pass_size, std::vector<FilmMoments>& pixels) {
+                   std::uint32_t pass_size, FilmMomentArray& pixels) {
+  if (pass_size > 0 && !pixels.has_passes())
+    throw std::logic_error("merge_batches: pass size " + std::to_string(pass_size) +
+                           " without pass moments (render/film_state.h FilmMomentArray)");
   const bool ends_pass = pass_size > 0 && (first + n_b) % pass_size == 0;
+  // The negative groups exist once a negative sample has arrived; merging none changes nothing.
+  for (std::size_t p = 0; p < pixels.size() && !pixels.has_negative(); ++p)
+    if (batch[p].negative > 0) pixels.keep_negative();
   for (std::size_t p = 0; p < pixels.size(); ++p) {
     const double negative = static_cast<double>(batch[p].negative);
     const double positive = static_cast<double>(n_b) - negative;
-    merge_batch(pixels[p].positive, positive, batch[p].mean, batch[p].m2);
-    merge_batch(pixels[p].negative, negative, batch[p].mean_negative, batch[p].m2_negative);
+    merge_batch(pixels.positive(p), positive, batch[p].mean, batch[p].m2);
+    if (pixels.has_negative())
+      merge_batch(pixels.negative(p), negative, batch[p].mean_negative, batch[p].m2_negative);
     if (pass_size == 0) continue;
-    PassMoments& pass = pixels[p].passes;
+    PassMoments& pass = pixels.passes(p);
     if (positive > 0.0) add_to_pass(pass, 1.0, positive, batch[p].mean);
     if (negative > 0.0) add_to_pass(pass, -1.0, negative, batch[p].mean_negative);
     if (ends_pass) end_pass(pass);

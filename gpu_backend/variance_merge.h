@@ -10,16 +10,17 @@
 #include <vector>
 
 #include "render/film_moments.h"
+#include "render/film_state.h"
 #include "shaders/batch.h"
 
 namespace tr {
 
 // Merges one batch of n_b samples per pixel, the sample indices [first, first + n_b), into
-// `pixels` (one FilmMoments per pixel). With pass_size > 0 (FilmState::pass_size) the batch must
+// `pixels` (one accumulator per pixel). With pass_size > 0 (FilmState::pass_size) the batch must
 // lie inside one pass: it joins the pass in progress, and ends it when first + n_b is a multiple
 // of pass_size.
 void merge_batches(const PixelBatch* batch, std::uint32_t first, std::uint32_t n_b,
-                   std::uint32_t pass_size, std::vector<FilmMoments>& pixels);
+                   std::uint32_t pass_size, FilmMomentArray& pixels);
 
 class MomentAccumulator {
  public:
@@ -34,7 +35,7 @@ class MomentAccumulator {
 
  private:
   std::uint64_t count_ = 0;
-  std::vector<FilmMoments> pixels_;
+  FilmMomentArray pixels_;
 };
 
 }  // namespace tr

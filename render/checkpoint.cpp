@@ -76,8 +76,9 @@ void write_checkpoint(const std::string& path, const RenderIdentity& id, const F
   {
     std::ofstream out(tmp.name(), std::ios::binary | std::ios::trunc);
     out << header(id, film.samples);
-    for (const std::vector<FilmMoments>* moments : {&film.pixels, &film.aovs})
-      for (const FilmMoments& m : *moments) write_moments(out, m);
+    // Absent parts (render/film_state.h FilmMomentArray) as the zeros they stand for.
+    for (const FilmMomentArray* moments : {&film.pixels, &film.aovs})
+      for (std::size_t i = 0; i < moments->size(); ++i) write_moments(out, (*moments)[i]);
     const RenderStats& s = film.stats;
     out.write(reinterpret_cast<const char*>(&s.seconds), sizeof s.seconds);
     out.write(reinterpret_cast<const char*>(&s.samples), sizeof s.samples);
@@ -127,8 +128,12 @@ FilmState read_checkpoint(const std::string& path, const RenderIdentity& expecte
   FilmState film =
       empty_film(expected.width, expected.height, expected.aov_count, expected.pass_size);
   film.samples = samples;
-  for (std::vector<FilmMoments>* moments : {&film.pixels, &film.aovs})
-    for (FilmMoments& m : *moments) read_moments(in, m);
+  for (FilmMomentArray* moments : {&film.pixels, &film.aovs})
+    for (std::size_t i = 0; i < moments->size(); ++i) {
+      FilmMoments m;
+      read_moments(in, m);
+      moments->set(i, m);
+    }
   RenderStats& s = film.stats;
   in.read(reinterpret_cast<char*>(&s.seconds), sizeof s.seconds);
   in.read(reinterpret_cast<char*>(&s.samples), sizeof s.samples);

@@ -27,9 +27,9 @@ inline double estimated_relative_error(const FilmState& film) {
   // Pixel by pixel (develop_film's values, summed in its order) rather than through a developed
   // copy of the film, which would be 48 bytes a pixel more while the render runs.
   double sum = 0.0;
-  for (const FilmMoments& m : film.pixels) {
+  for (std::size_t p = 0; p < film.pixels.size(); ++p) {
     double mean[3], variance[3];
-    develop_estimate(m, film.pass_size, mean, variance);
+    develop_estimate(film.pixels[p], film.pass_size, mean, variance);
     for (int c = 0; c < 3; ++c)
       sum += variance[c] / (double(film.samples) * (mean[c] * mean[c] + 1e-2));
   }

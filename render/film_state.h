@@ -15,6 +15,65 @@
 
 namespace tr {
 
+// The moments of `size()` accumulators (one a pixel, or aov_count a pixel), each part of
+// FilmMoments in its own array, so that a film holds only the parts its render fills: the
+// negative samples' groups once a sample of a filter with negative lobes arrives
+// (keep_negative()), the passes' only with a correlated sampler. For independent samples and
+// filters without negative lobes that is 56 bytes an accumulator instead of 200. An absent part
+// reads as FilmMoments' zeros, which is what it would hold.
+class FilmMomentArray {
+ public:
+  FilmMomentArray() = default;
+  FilmMomentArray(std::size_t size, bool passes) : positive_(size), passes_(passes ? size : 0) {}
+
+  std::size_t size() const { return positive_.size(); }
+  bool empty() const { return positive_.empty(); }
+  bool has_negative() const { return !negative_.empty(); }
+  bool has_passes() const { return !passes_.empty(); }
+
+  // Allocates the negative groups (all zero) unless they are there.
+  void keep_negative() {
+    if (negative_.empty()) negative_.resize(positive_.size());
+  }
+
+  SampleGroup& positive(std::size_t i) { return positive_[i]; }
+  // Only after keep_negative() (has_negative()).
+  SampleGroup& negative(std::size_t i) { return negative_[i]; }
+  // Only with passes (has_passes()).
+  PassMoments& passes(std::size_t i) { return passes_[i]; }
+
+  // Accumulator i whole; const so that assigning to it does not compile (use set).
+  const FilmMoments operator[](std::size_t i) const {
+    FilmMoments m;
+    m.positive = positive_[i];
+    if (has_negative()) m.negative = negative_[i];
+    if (has_passes()) m.passes = passes_[i];
+    return m;
+  }
+
+  // Stores m as accumulator i: its negative group allocates the negative ones unless it is all
+  // zero; its pass moments are dropped without passes, where nothing reads them
+  // (render/error_estimate.h).
+  void set(std::size_t i, const FilmMoments& m) {
+    positive_[i] = m.positive;
+    if (!has_negative() && !is_zero(m.negative)) keep_negative();
+    if (has_negative()) negative_[i] = m.negative;
+    if (has_passes()) passes_[i] = m.passes;
+  }
+
+ private:
+  static bool is_zero(const SampleGroup& g) {
+    if (g.n != 0.0) return false;
+    for (int c = 0; c < 3; ++c)
+      if (g.mean[c] != 0.0 || g.m2[c] != 0.0) return false;
+    return true;
+  }
+
+  std::vector<SampleGroup> positive_;
+  std::vector<SampleGroup> negative_;  // empty: no negative sample yet
+  std::vector<PassMoments> passes_;    // empty without passes
+};
+
 struct FilmState {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
@@ -22,12 +81,12 @@ struct FilmState {
   // Samples of one pass of a correlated sampler (its sample_count; a pass ends after sample
   // index i when (i + 1) % pass_size == 0), 0 for a sampler without passes (independent).
   std::uint32_t pass_size = 0;
-  std::vector<FilmMoments> pixels;
+  FilmMomentArray pixels;
   RenderStats stats;  // seconds: sampling time so far, plus the one acceleration build
   // Mitsuba `aov` (core/integrators/aov.h): each pixel's samples of aov_count output
   // variables, as three channels each, pixel-major: aovs[pixel * aov_count + i].
   std::uint32_t aov_count = 0;
-  std::vector<FilmMoments> aovs;
+  FilmMomentArray aovs;
 };
 
 inline FilmState empty_film(std::uint32_t width, std::uint32_t height, std::uint32_t aov_count = 0,
@@ -36,9 +95,10 @@ inline FilmState empty_film(std::uint32_t width, std::uint32_t height, std::uint
   f.width = width;
   f.height = height;
   f.pass_size = pass_size;
-  f.pixels.resize(std::size_t(width) * height);
+  const std::size_t pixels = std::size_t(width) * height;
+  f.pixels = FilmMomentArray(pixels, pass_size > 0);
   f.aov_count = aov_count;
-  f.aovs.resize(f.pixels.size() * aov_count);
+  f.aovs = FilmMomentArray(pixels * aov_count, pass_size > 0);
   return f;
 }
 

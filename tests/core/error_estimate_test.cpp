@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -137,17 +138,39 @@ TEST(ErrorEstimate, NamesWhatTheVarianceIs) {
   EXPECT_EQ(variance_estimate_name(16, 16 * 16 + 3), "randomizations: 16 passes of 16 samples");
 }
 
+// render/film_state.h: a film's accumulators keep the negative groups from the first one that
+// has negative samples on, the pass moments only with passes, and read absent parts as zeros.
+TEST(FilmMomentArray, HoldsOnlyThePartsItIsGiven) {
+  FilmMomentArray without_passes(3, false);
+  EXPECT_FALSE(without_passes.has_passes());
+  EXPECT_FALSE(without_passes.has_negative());
+  const FilmMoments positive = accumulate(draw(8, 0.0, 8), 4);
+  without_passes.set(1, positive);
+  EXPECT_FALSE(without_passes.has_negative());
+  EXPECT_EQ(without_passes[1].positive.n, 8.0);
+  EXPECT_EQ(without_passes[1].passes.values.n, 0.0);  // dropped: nothing reads them
+
+  FilmMomentArray with_passes(3, true);
+  const FilmMoments signed_samples = accumulate(draw(64, 0.5, 9), 4);
+  ASSERT_GT(signed_samples.negative.n, 0.0);
+  with_passes.set(2, signed_samples);
+  EXPECT_TRUE(with_passes.has_negative());
+  const FilmMoments back = with_passes[2];
+  EXPECT_EQ(std::memcmp(&back, &signed_samples, sizeof back), 0);
+  EXPECT_EQ(with_passes[0].negative.n, 0.0);
+}
+
 // render --target-error trusts a correlated sampler's estimate from kMinErrorPasses passes on.
 TEST(ErrorEstimate, RelativeErrorNeedsSixteenPasses) {
   FilmState film = empty_film(1, 1, 0, 4);
-  film.pixels[0] = accumulate(draw(4 * 15, 0.0, 6), 4);
+  film.pixels.set(0, accumulate(draw(4 * 15, 0.0, 6), 4));
   film.samples = 4 * 15;
   EXPECT_TRUE(std::isinf(estimated_relative_error(film)));
-  film.pixels[0] = accumulate(draw(4 * 16, 0.0, 6), 4);
+  film.pixels.set(0, accumulate(draw(4 * 16, 0.0, 6), 4));
   film.samples = 4 * 16;
   EXPECT_TRUE(std::isfinite(estimated_relative_error(film)));
   FilmState independent = empty_film(1, 1);
-  independent.pixels[0] = accumulate(draw(16, 0.0, 7), 16);
+  independent.pixels.set(0, accumulate(draw(16, 0.0, 7), 16));
   independent.samples = 16;
   EXPECT_TRUE(std::isfinite(estimated_relative_error(independent)));
 }

@@ -50,8 +50,11 @@ void expect_same_moments(const FilmState& a, const FilmState& b) {
   ASSERT_EQ(a.samples, b.samples);
   ASSERT_EQ(a.pass_size, b.pass_size);
   ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  for (std::size_t p = 0; p < a.pixels.size(); ++p)
-    ASSERT_EQ(std::memcmp(&a.pixels[p], &b.pixels[p], sizeof(FilmMoments)), 0) << "pixel " << p;
+  ASSERT_EQ(a.pixels.has_negative(), b.pixels.has_negative());
+  for (std::size_t p = 0; p < a.pixels.size(); ++p) {
+    const FilmMoments x = a.pixels[p], y = b.pixels[p];
+    ASSERT_EQ(std::memcmp(&x, &y, sizeof(FilmMoments)), 0) << "pixel " << p;
+  }
 }
 
 // Ranges that end inside passes and span several, against one range (passes of 16).
@@ -69,6 +72,9 @@ TEST(PassEstimate, IndependentHasNoPasses) {
   const FilmState film = render_ranges(cornell_box(SAMPLER_INDEPENDENT, 16), {32}, 1);
   EXPECT_EQ(film.pass_size, 0u);
   EXPECT_EQ(film.pixels[0].passes.values.n, 0.0);
+  // Nor does the film hold any, or negative groups for its gaussian filter (FilmMomentArray).
+  EXPECT_FALSE(film.pixels.has_passes());
+  EXPECT_FALSE(film.pixels.has_negative());
 }
 
 // A checkpoint taken inside a pass resumes to the unsplit render's moments; one of format
@@ -163,7 +169,8 @@ TEST(PassEstimate, EstimatedVarianceOfTheMeanMatchesTheVarianceOverSeeds) {
     const FilmState film = render_ranges(scene, {spp}, 1000 + seed);
     ASSERT_EQ(completed_passes(film.pass_size, film.samples), kPasses);
     std::vector<double> v, e, s;
-    for (const FilmMoments& m : film.pixels) {
+    for (std::size_t p = 0; p < film.pixels.size(); ++p) {
+      const FilmMoments m = film.pixels[p];
       double mean[3], variance[3], ps_mean[3], ps_variance[3];
       develop_estimate(m, film.pass_size, mean, variance);
       develop(m, ps_mean, ps_variance);

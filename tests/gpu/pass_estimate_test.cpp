@@ -27,6 +27,15 @@ Scene cornell_box(uint sampler, uint requested) {
   return scene;
 }
 
+void expect_same_moments(const FilmState& a, const FilmState& b) {
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  ASSERT_EQ(a.pixels.has_negative(), b.pixels.has_negative());
+  for (std::size_t p = 0; p < a.pixels.size(); ++p) {
+    const FilmMoments x = a.pixels[p], y = b.pixels[p];
+    ASSERT_EQ(std::memcmp(&x, &y, sizeof(FilmMoments)), 0) << p;
+  }
+}
+
 FilmState render_ranges(Renderer& renderer, const std::vector<uint32_t>& ranges) {
   FilmState film = empty_film(8, 8, 0, renderer.pass_size());
   for (uint32_t count : ranges) renderer.render(count, film, {});
@@ -45,8 +54,7 @@ TEST(GpuPassEstimate, SplitOnBatchesKeepsThePassMomentsBitForBit) {
   const FilmState whole = render_ranges(*gpu, {1024});
   const FilmState split = render_ranges(*gpu, {g, 512 - g, 512});
   ASSERT_EQ(whole.pixels[0].passes.values.n, 2.0);
-  for (std::size_t p = 0; p < whole.pixels.size(); ++p)
-    ASSERT_EQ(std::memcmp(&whole.pixels[p], &split.pixels[p], sizeof(FilmMoments)), 0) << p;
+  expect_same_moments(whole, split);
 
   // The CPU draws the same numbers: the estimates agree up to float rounding.
   std::unique_ptr<Renderer> cpu_renderer = make_cpu_renderer(scene, options);
@@ -73,8 +81,7 @@ TEST(GpuPassEstimate, BatchesStopAtPassEnds) {
   const FilmState whole = render_ranges(*renderer, {289 * 2});
   const FilmState split = render_ranges(*renderer, {256, 289 * 2 - 256});
   EXPECT_EQ(whole.pixels[0].passes.values.n, 2.0);
-  for (std::size_t p = 0; p < whole.pixels.size(); ++p)
-    ASSERT_EQ(std::memcmp(&whole.pixels[p], &split.pixels[p], sizeof(FilmMoments)), 0) << p;
+  expect_same_moments(whole, split);
 }
 
 }  // namespace

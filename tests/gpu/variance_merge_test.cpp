@@ -112,7 +112,7 @@ TEST(GpuVarianceMerge, BatchesInsidePassesGiveThePassValues) {
   std::lognormal_distribution<float> radiance(0.0f, 1.0f);
   std::bernoulli_distribution negative(0.2);
   const uint32_t pass_size = 12, batch_sizes[] = {4, 4, 4, 6, 6, 3, 3, 3, 3, 12, 2, 2};
-  std::vector<FilmMoments> gpu(1);
+  FilmMomentArray gpu(1, true);
   FilmMoments cpu;
   uint32_t first = 0;
   for (uint32_t n : batch_sizes) {
@@ -135,7 +135,7 @@ TEST(GpuVarianceMerge, BatchesInsidePassesGiveThePassValues) {
     merge_batches(&batch, first, n, pass_size, gpu);
     first += n;
   }
-  const PassMoments& g = gpu[0].passes;
+  const PassMoments g = gpu[0].passes;
   ASSERT_EQ(g.values.n, 4.0);
   ASSERT_EQ(cpu.passes.values.n, 4.0);
   for (int c = 0; c < 3; ++c) {
