@@ -176,8 +176,10 @@ INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // roughplastic table slot holds a texture of its own, not a parameter, and is left as it is;
 // flags are taken from the unevaluated material (a textured spec_trans transmits everywhere).
 // A slot that no leaf material of the scene textures is skipped (TR_HAS_TEXTURED_SLOT: folded
-// by the GPU pipeline's specialization, so its lookup code is not even compiled).
+// by the GPU pipeline's specialization, so its lookup code is not even compiled), and so is a
+// material without textures.
 INLINE Material material_at(Material m, TexCoord uv) {
+  if ((m.flags & MATERIAL_TEXTURED) == 0u) return m;
   UNROLL for (uint k = 0u; k <= MATERIAL_PARAM_COUNT; ++k) {
     if (!TR_HAS_TEXTURED_SLOT(k)) continue;
     bool opacity = k == MATERIAL_PARAM_COUNT;

@@ -65,6 +65,8 @@ const uint MATERIAL_BECKMANN = 4u;        // microfacet distribution (GGX when c
 const uint MATERIAL_SAMPLE_VISIBLE = 8u;  // microfacet `sample_visible`
 const uint MATERIAL_NONLINEAR = 16u;      // plastic / roughplastic `nonlinear`
 const uint MATERIAL_ALPHA_TESTED = 32u;   // twinray `alphatest` wrapper (core/alpha_test.h)
+const uint MATERIAL_TEXTURED =
+    64u;  // a parameter slot or the opacity reads a texture (material_at)
 
 // Parameter slots, per BSDF type (Material.param[i]); see core/bsdf/*.h for their meaning.
 const uint MATERIAL_PARAM_COUNT = 12u;

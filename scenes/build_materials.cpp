@@ -668,4 +668,15 @@ Material SceneBuilder::build_principled(Node& n) {
   return m;
 }
 
+// MATERIAL_TEXTURED: the roughplastic table slot holds a precomputed table, not a parameter.
+void SceneBuilder::mark_textured_materials() {
+  for (Material& m : b_.materials) {
+    bool textured = m.opacity.texture != NO_INDEX;
+    for (uint k = 0; k < MATERIAL_PARAM_COUNT; ++k)
+      textured |= m.param[k].texture != NO_INDEX &&
+                  !(m.type == BSDF_ROUGHPLASTIC && k == ROUGHPLASTIC_TABLE);
+    if (textured) m.flags |= MATERIAL_TEXTURED;
+  }
+}
+
 }  // namespace tr

@@ -99,6 +99,7 @@ Scene SceneBuilder::build() {
     add_integrator(path);
   }
 
+  mark_textured_materials();
   number_shapes_as_mitsuba();
   finalize_shapes();
   finalize_emitters();

@@ -50,6 +50,8 @@ class SceneBuilder {
   std::map<std::pair<const Node*, bool>, uint> texture_cache_;
   std::map<std::string, std::pair<uint, glm::uvec2>> texel_cache_;
   uint default_material_ = NO_INDEX;
+  // Sets MATERIAL_TEXTURED on every material that reads a texture (core/bsdf.h, material_at).
+  void mark_textured_materials();
   uint default_luminaire_material_ = NO_INDEX;
   uint material(Node& bsdf);
   uint default_material(bool emitter);

@@ -576,6 +576,7 @@ TEST(BsdfValues, TexturedParameters) {
   scene.textures.push_back(checker);
   Material m = diffuse(vec3(0.5f));
   m.param[DIFFUSE_REFLECTANCE].texture = index;
+  m.flags |= MATERIAL_TEXTURED;
   vec3 wi = direction(0.8f, 0.0f);
   BsdfSample s0 = bsdf_sample(m, vec2(0.25f, 0.25f), wi, 0.5f, vec2(0.5f));
   BsdfSample s1 = bsdf_sample(m, vec2(0.75f, 0.25f), wi, 0.5f, vec2(0.5f));
@@ -590,6 +591,7 @@ TEST(BsdfValues, TexturedParameters) {
   Material rough = rough_conductor(0u, 0.1f, 0.1f, vec3(0.0f), vec3(1.0f));
   rough.param[CONDUCTOR_ALPHA_U].texture = grey_index;
   rough.param[CONDUCTOR_ALPHA_V].texture = grey_index;
+  rough.flags |= MATERIAL_TEXTURED;
   vec3 wo = direction(0.7f, 3.0f);
   for (float u : {0.25f, 0.75f}) {
     float alpha = u < 0.5f ? 0.2f : 0.45f;

@@ -107,6 +107,7 @@ void drop_diffuse_cosine(Scene& scene, uint material, int width, int height, flo
   tex.to_uv[1] = vec4(0.0f, 1.0f, 0.0f, 0.0f);
   b.texels.insert(b.texels.end(), texels.begin(), texels.end());
   b.materials[material].param[DIFFUSE_REFLECTANCE].texture = uint(b.textures.size());
+  b.materials[material].flags |= MATERIAL_TEXTURED;
   b.textures.push_back(tex);
 }
 
