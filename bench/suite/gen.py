@@ -184,7 +184,9 @@ def gen_emitters(out, count):
     # Powers log-uniform over four decades, scaled so that all emitters together emit the same
     # 300 W whatever the count (the images stay comparable). A one-sided Lambertian emitter of
     # radiance L and area A emits pi L A.
-    side = 0.3
+    # Beyond 1000 triangles they shrink so that together they cover the same area (about a
+    # quarter of the plane's, seen from above): more emitters, not a ceiling of them.
+    side = 0.3 * min(1.0, math.sqrt(1000.0 / count))
     area = 0.5 * side * side
     powers = [10.0 ** rng.uniform(0.0, 4.0) for _ in range(count)]
     total = sum(powers)
