@@ -4,7 +4,7 @@ triangle count, the thread count, the resolution and max_depth.
 
 usage: bench/suite/scaling.py [--full] [--smoke] [--write] OUT_DIR
   OUT_DIR  generated scenes, renders and logs (never inside the repository)
-  --full   also 1e7 triangles (a 190 MB PLY; about 10 s to generate and 10 s to load, twice)
+  --full   also 1e7 triangles (a 190 MB PLY: about 10 s to generate and 10 s to load, 3 times)
   --smoke  tiny sizes (16 to 32 pixels a side, 1 to 4 spp, up to 1e4 triangles, one run each)
            to check the script in seconds; its figures mean nothing and --write is refused
   --write  replace the table between the bench/scaling markers of BENCHMARKS.md and write
@@ -15,9 +15,10 @@ env: TWINRAY (build/app/twinray), THREADS (2: the thread count of every measurem
 Four measurements on the CPU backend, each from twinray's summary line (the render phase: the
 Embree BVH build and the sampling, not the scene load):
 - triangles: gen.py's mesh scenes (a displaced sphere of N triangles in a lit box, max_depth
-  6) for N = 1e3 .. 1e6, 128x128, 16 spp; also at 1 spp, so that the difference of the two
-  render times, over the 15 extra samples a pixel, is the time per sample without the BVH
-  build and the other once-per-render costs;
+  6) for N = 1e3 .. 1e6, 128x128, 16 spp; also at 1 and 65 spp, so that the difference of
+  those two render times, over the 64 extra samples a pixel, is the time per sample without
+  the BVH build and the other once-per-render costs (the build's time varies by about 0.1 s
+  from run to run at 1e6 triangles: 15 extra samples a pixel would not hide that);
 - threads: twinray's default Cornell box (max_depth 8), 256x256, 32 spp, with --threads 1, 2
   (and powers of two up to the core count), the median of 3 runs each; Msamples/s and the
   speed-up over one thread;
@@ -42,7 +43,7 @@ BEGIN, END = "<!-- bench/scaling begin -->", "<!-- bench/scaling end -->"
 
 def settings(full, smoke):
     if smoke:
-        return {"triangles": [1000, 10000], "tri_side": 32, "tri_spp": 4,
+        return {"triangles": [1000, 10000], "tri_side": 32, "tri_spp": 4, "tri_long_spp": 8,
                 "threads": [1, 2], "thr_side": 32, "thr_spp": 1, "thr_runs": 1,
                 "resolutions": [16, 32], "res_spp": 1,
                 "depths": [1, 2, 4], "depth_side": 32, "depth_spp": 1}
@@ -50,7 +51,8 @@ def settings(full, smoke):
     while threads[-1] * 2 <= (os.cpu_count() or 1):
         threads.append(threads[-1] * 2)
     return {"triangles": [10 ** k for k in range(3, 8 if full else 7)], "tri_side": 128,
-            "tri_spp": 16, "threads": threads, "thr_side": 256, "thr_spp": 32, "thr_runs": 3,
+            "tri_spp": 16, "tri_long_spp": 65, "threads": threads, "thr_side": 256,
+            "thr_spp": 32, "thr_runs": 3,
             "resolutions": [64, 128, 256, 512], "res_spp": 16,
             "depths": [1, 2, 4, 8, 16], "depth_side": 128, "depth_spp": 32}
 
@@ -167,13 +169,13 @@ def svg_plot(r):
     w, h = 400, 290
     blue, orange, grey = "#1f77b4", "#ff7f0e", "#888"
     tri = r["triangles"]
-    decades = [10 ** e for e in range(math.floor(math.log10(min(n for n, *_ in tri)) + 0.5),
-                                      math.floor(math.log10(max(n for n, *_ in tri)) + 0.5) + 1)]
+    decades = [10 ** e for e in range(math.floor(math.log10(min(t[0] for t in tri)) + 0.5),
+                                      math.floor(math.log10(max(t[0] for t in tri)) + 0.5) + 1)]
     body = panel(0, 0, w, h, "time per sample against triangles", "triangles", "µs per sample",
                  [(f"render phase at {r['cfg']['tri_spp']} spp", blue, False,
-                   [(n, us) for n, _, _, us, _ in tri]),
+                   [(t[0], t[4]) for t in tri]),
                   ("without the once-per-render costs", orange, False,
-                   [(n, us) for n, _, _, _, us in tri])], decades)
+                   [(t[0], t[5]) for t in tri])], decades)
     thr = r["threads"]
     body += panel(w, 0, w, h, "throughput against threads", "threads", "Msamples/s",
                   [("measured (median of runs)", blue, False, [(t, ms) for t, ms, _ in thr]),
@@ -192,14 +194,15 @@ def svg_plot(r):
 def tables(r):
     c = r["cfg"]
     lines = [f"Triangles (gen.py mesh, {c['tri_side']}×{c['tri_side']}, max_depth "
-             f"{r['mesh_depth']}; "
-             f"\"without the once-per-render costs\" = (render s at {c['tri_spp']} spp − at "
-             f"1 spp) over the {c['tri_spp'] - 1} extra samples a pixel):", "",
-             f"| triangles | render s at 1 spp | render s at {c['tri_spp']} spp | µs/sample "
-             f"(render phase) | µs/sample without the once-per-render costs |",
-             "|---|---|---|---|---|"]
-    lines += [f"| {n} | {t1:.3f} | {tn:.3f} | {us:.3f} | {marginal:.3f} |"
-              for n, t1, tn, us, marginal in r["triangles"]]
+             f"{r['mesh_depth']}; \"without the once-per-render costs\" = (render s at "
+             f"{c['tri_long_spp']} spp − at 1 spp) over the {c['tri_long_spp'] - 1} extra "
+             "samples a pixel):", "",
+             f"| triangles | render s at 1 spp | at {c['tri_spp']} spp | at {c['tri_long_spp']} "
+             f"spp | µs/sample at {c['tri_spp']} spp (render phase) | µs/sample without the "
+             "once-per-render costs |",
+             "|---|---|---|---|---|---|"]
+    lines += [f"| {n} | {t1:.3f} | {tn:.3f} | {tl:.3f} | {us:.3f} | {marginal:.3f} |"
+              for n, t1, tn, tl, us, marginal in r["triangles"]]
     runs = c["thr_runs"]
     lines += ["", f"Threads (Cornell box, {c['thr_side']}×{c['thr_side']}, {c['thr_spp']} spp, "
               f"max_depth {r['cornell_depth']}; median of {runs} run{'s' if runs > 1 else ''}):",
@@ -267,7 +270,7 @@ def main():
     r = {"cfg": cfg, "triangles": [], "threads": [], "resolutions": [], "depths": [],
          "cornell_depth": default_max_depth(CORNELL)}
 
-    side, spp = cfg["tri_side"], cfg["tri_spp"]
+    side, spp, long_spp = cfg["tri_side"], cfg["tri_spp"], cfg["tri_long_spp"]
     for target in cfg["triangles"]:
         scene = run([sys.executable, os.path.join(HERE, "gen.py"), "mesh", out,
                      "--triangles", str(target)]).strip()
@@ -278,12 +281,14 @@ def main():
         r["mesh_depth"] = default_max_depth(scene)
         _, t1 = render(scene, os.path.join(out, f"mesh_{n}_1spp.exr"), side, 1)
         samples, tn = render(scene, os.path.join(out, f"mesh_{n}_{spp}spp.exr"), side, spp)
-        marginal = (tn - t1) / (side * side * (spp - 1)) * 1e6
+        _, tl = render(scene, os.path.join(out, f"mesh_{n}_{long_spp}spp.exr"), side, long_spp)
+        marginal = (tl - t1) / (side * side * (long_spp - 1)) * 1e6
         if marginal <= 0:
-            sys.exit(f"scaling: mesh_{n}: {spp} spp took {tn} s, not more than 1 spp's {t1} s")
-        r["triangles"].append((n, t1, tn, tn / samples * 1e6, marginal))
-        print(f"scaling: {n} triangles: {t1:.3f} s at 1 spp, {tn:.3f} s at {spp} spp",
-              file=sys.stderr)
+            sys.exit(f"scaling: mesh_{n}: {long_spp} spp took {tl} s, not more than 1 spp's "
+                     f"{t1} s")
+        r["triangles"].append((n, t1, tn, tl, tn / samples * 1e6, marginal))
+        print(f"scaling: {n} triangles: {t1:.3f} s at 1 spp, {tn:.3f} s at {spp} spp, "
+              f"{tl:.3f} s at {long_spp} spp", file=sys.stderr)
 
     for t in cfg["threads"]:
         rates = []
