@@ -22,7 +22,8 @@ TR_NAMESPACE_BEGIN
 // (NO_INDEX when none can light ref_p). One 2D number whatever the selection: u.x picks, u.y is
 // an alias table's second choice.
 INLINE uint select_emitter(SceneGlobals g, vec3 ref_p, vec2 u, OUT(float) pmf) {
-  if (g.emitter_selection != EMITTER_SELECTION_BVH)
+  if (!TR_HAS_EMITTER_SELECTION(EMITTER_SELECTION_BVH) ||
+      g.emitter_selection != EMITTER_SELECTION_BVH)
     return alias_sample(g.emitter_alias_offset, g.emitter_count, u, pmf);
   float p_inf = g.infinite_probability;
   if (u.x < p_inf) {
@@ -39,7 +40,9 @@ INLINE uint select_emitter(SceneGlobals g, vec3 ref_p, vec2 u, OUT(float) pmf) {
 
 // The probability with which select_emitter chooses emitter `index` from ref_p.
 INLINE float emitter_pmf(SceneGlobals g, vec3 ref_p, uint index) {
-  if (g.emitter_selection != EMITTER_SELECTION_BVH) return alias_pmf(g.emitter_alias_offset, index);
+  if (!TR_HAS_EMITTER_SELECTION(EMITTER_SELECTION_BVH) ||
+      g.emitter_selection != EMITTER_SELECTION_BVH)
+    return alias_pmf(g.emitter_alias_offset, index);
   float pmf = 0.0f;
   if (g.infinite_probability > 0.0f)
     pmf += g.infinite_probability * alias_pmf(g.infinite_alias_offset, index);

@@ -19,9 +19,12 @@ SceneFeatures scene_features(const SceneBuffers& scene) {
   const Integrator& it = scene.globals.integrator;
   for (uint i = 0; i < it.aov_count; ++i) f.aov_types |= 1u << it.aov_types[i / 4][i % 4];
   f.sampler_types = 1u << scene.globals.sampler_params.type;
+  f.emitter_selections = 1u << scene.globals.emitter_selection;
   return f;
 }
 
-SceneFeatures all_features() { return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u}; }
+SceneFeatures all_features() {
+  return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u};
+}
 
 }  // namespace tr

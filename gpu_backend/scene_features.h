@@ -1,5 +1,5 @@
 // The scene's feature masks, passed to every shader stage as the specialization constants
-// of shaders/features.glsl (constant_id 0..8, in this struct's order).
+// of shaders/features.glsl (constant_id 0..9, in this struct's order).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,7 @@ struct SceneFeatures {
   // Bit k: a leaf (non-blend) material textures parameter slot k; bit MATERIAL_PARAM_COUNT:
   // its mask opacity (core/bsdf.h, material_at).
   uint32_t textured_slots = 0;
+  uint32_t emitter_selections = 0;  // bit EMITTER_SELECTION_*
 };
 
 SceneFeatures scene_features(const SceneBuffers& scene);

@@ -18,6 +18,8 @@ layout(constant_id = 7) const uint SPEC_SAMPLER_TYPES = 0xffffffffu;
 // Bit k: some leaf material textures its parameter slot k (bit MATERIAL_PARAM_COUNT: its mask
 // opacity); material_at looks up only these.
 layout(constant_id = 8) const uint SPEC_TEXTURED_SLOTS = 0xffffffffu;
+// Bit s: the scene chooses emitters by EMITTER_SELECTION_s (core/emitter.h).
+layout(constant_id = 9) const uint SPEC_EMITTER_SELECTIONS = 0xffffffffu;
 
 #define TR_HAS_BSDF(type) ((SPEC_BSDF_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_EMITTER(type) ((SPEC_EMITTER_TYPES & (1u << (type))) != 0u)
@@ -29,5 +31,6 @@ layout(constant_id = 8) const uint SPEC_TEXTURED_SLOTS = 0xffffffffu;
 #define TR_HAS_AOVS (SPEC_AOV_TYPES != 0u)
 #define TR_HAS_SAMPLER(type) ((SPEC_SAMPLER_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_TEXTURED_SLOT(k) ((SPEC_TEXTURED_SLOTS & (1u << (k))) != 0u)
+#define TR_HAS_EMITTER_SELECTION(s) ((SPEC_EMITTER_SELECTIONS & (1u << (s))) != 0u)
 
 #endif
