@@ -331,7 +331,7 @@ TEST(SceneValues, TexturesForColorAndScalarParameters) {
       "<bsdf type=\"diffuse\"><ref name=\"reflectance\" id=\"checks\"/></bsdf></bsdf></shape>");
   const SceneBuffers& b = s.buffers;
   const Material& m = b.materials[b.shapes[0].material];
-  EXPECT_EQ(m.flags, MATERIAL_MASKED);
+  EXPECT_EQ(m.flags, MATERIAL_MASKED | MATERIAL_TEXTURED);
   uint color_tex = m.param[DIFFUSE_REFLECTANCE].texture, scalar_tex = m.opacity.texture;
   ASSERT_NE(color_tex, NO_INDEX);
   ASSERT_NE(scalar_tex, NO_INDEX);
