@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/alpha_test.h"
+#include "core/shapes/bounds.h"
 #include "core/shapes/intersect.h"
 
 namespace tr {
@@ -77,16 +78,7 @@ void alpha_test_filter(const RTCFilterFunctionNArguments* args) {
 
 // Bounds of the canonical analytic shape mapped by the shape's to_world.
 void analytic_bounds(const Shape& s, vec3& lower, vec3& upper) {
-  vec3 lo(-1.0f, -1.0f, s.type == SHAPE_SPHERE ? -1.0f : 0.0f);
-  vec3 hi(1.0f, 1.0f, s.type == SHAPE_DISK ? 0.0f : 1.0f);
-  lower = vec3(std::numeric_limits<float>::max());
-  upper = -lower;
-  for (int corner = 0; corner < 8; ++corner) {
-    vec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
-    vec3 p = transform_point(s.to_world[0], s.to_world[1], s.to_world[2], c);
-    lower = min(lower, p);
-    upper = max(upper, p);
-  }
+  analytic_shape_bounds(s, lower, upper);
   vec3 pad = 1e-5f * (upper - lower) + vec3(1e-6f);  // bounds must contain rounded hits
   lower -= pad;
   upper += pad;

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "core/transform.h"
+#include "core/shapes/bounds.h"
 #include "gpu_backend/gpu_error.h"
 
 namespace tr {
@@ -47,16 +47,8 @@ GeometryLayout geometry_layout(const SceneBuffers& scene) {
 }
 
 VkAabbPositionsKHR shape_bounds(const Shape& shape) {
-  // Object-space boxes: unit sphere, unit disk (z = 0), unit cylinder z in [0, 1].
-  vec3 lo(-1.0f, -1.0f, shape.type == SHAPE_SPHERE ? -1.0f : 0.0f);
-  vec3 hi(1.0f, 1.0f, shape.type == SHAPE_DISK ? 0.0f : 1.0f);
-  vec3 wlo(FLOAT_MAX), whi(-FLOAT_MAX);
-  for (int c = 0; c < 8; ++c) {
-    vec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-    vec3 w = transform_point(shape.to_world[0], shape.to_world[1], shape.to_world[2], p);
-    wlo = min(wlo, w);
-    whi = max(whi, w);
-  }
+  vec3 wlo, whi;
+  analytic_shape_bounds(shape, wlo, whi);
   // Conservative padding: the box only culls, the intersection shader decides.
   vec3 pad = 1e-3f * (whi - wlo) + vec3(1e-4f * std::max(1.0f, max_component(abs(whi) + abs(wlo))));
   wlo -= pad;

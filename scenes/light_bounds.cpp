@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/shapes/bounds.h"
+
 namespace tr {
 
 namespace {
@@ -19,10 +21,6 @@ glm::dmat3 rows_to_matrix(const vec4 rows[3]) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) m[c][r] = double(rows[r][c]);
   return m;
-}
-
-glm::dvec3 transform(const vec4 rows[3], const glm::dvec3& p) {
-  return rows_to_matrix(rows) * p + glm::dvec3(rows[0].w, rows[1].w, rows[2].w);
 }
 
 // Whether the linear map keeps angles (a rotation, reflection and uniform scale), so that a
@@ -69,14 +67,13 @@ void grow(LightBounds& l, const glm::dvec3& p) {
   l.hi = glm::max(l.hi, p);
 }
 
-// The box of the unit shape of an analytic shape type, placed by to_world.
+// An analytic shape's box (core/shapes/bounds.h), padded for the float transform's rounding.
 void analytic_box(LightBounds& l, const Shape& s) {
-  const double z0 = s.type == SHAPE_CYLINDER ? 0.0 : -1.0;
-  const double z1 = s.type == SHAPE_DISK ? 0.0 : 1.0;
-  for (int i = 0; i < 8; ++i) {
-    glm::dvec3 corner(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? z1 : z0);
-    grow(l, transform(s.to_world, corner));
-  }
+  vec3 lo, hi;
+  analytic_shape_bounds(s, lo, hi);
+  const glm::dvec3 pad = 1e-5 * glm::dvec3(hi - lo) + 1e-6;
+  grow(l, glm::dvec3(lo) - pad);
+  grow(l, glm::dvec3(hi) + pad);
 }
 
 // Area emitters: the shape's box and the cone of its normals as the emitter samples and
