@@ -1,6 +1,7 @@
 #include "scenes/emitter_selection.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "scenes/alias_table.h"
 #include "scenes/light_bvh_build.h"
@@ -33,12 +34,14 @@ uint parse_emitter_selection(const std::string& name) {
 
 const char* emitter_selection_name(uint selection) {
   switch (selection) {
+    case EMITTER_SELECTION_UNIFORM:
+      return "uniform";
     case EMITTER_SELECTION_POWER:
       return "power";
     case EMITTER_SELECTION_BVH:
       return "bvh";
     default:
-      return "uniform";
+      throw std::logic_error("emitter selection " + std::to_string(selection) + " has no name");
   }
 }
 
