@@ -289,6 +289,8 @@ int render_command(int argc, char** argv) {
         {"twinray:scene", a.scene},
         {"twinray:integrator", scene.integrator_name},
         {"twinray:sampler", sampler},
+        {"twinray:emitter_selection",
+         emitter_selection_name(scene.buffers.globals.emitter_selection)},
         {"twinray:version", TWINRAY_VERSION},
         {"twinray:stopped", stop_reason_name(outcome.stop)},
         {"twinray:estimated_error", std::to_string(outcome.error)}};

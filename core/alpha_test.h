@@ -20,7 +20,7 @@ TR_NAMESPACE_BEGIN
 
 // The mesh uv at barycentrics (b1, b2) of a triangle: the interpolated vertex uvs, or (b1, b2)
 // for a mesh without uvs as Mitsuba (src/render/mesh.cpp) and surface_interaction.
-INLINE vec2 mesh_hit_uv(Shape shape, uint primitive, vec2 b) {
+INLINE vec2 mesh_hit_uv(IN(Shape) shape, uint primitive, vec2 b) {
   if ((shape.flags & SHAPE_HAS_UVS) == 0u) return b;
   uint base = shape.first_index + 3u * primitive;
   vec2 uv0 = scene_uv(shape.first_vertex + scene_index(base));
@@ -32,8 +32,8 @@ INLINE vec2 mesh_hit_uv(Shape shape, uint primitive, vec2 b) {
 // Whether a candidate hit on shape `shape` is cut away by its material's alpha test.
 INLINE bool alpha_test_cuts(uint shape_index, uint primitive, vec2 barycentrics) {
   if (!TR_HAS_MATERIAL_FLAG(MATERIAL_ALPHA_TESTED)) return false;
-  Shape shape = scene_shape(shape_index);
-  Material m = scene_material(shape.material);
+  REF(Shape) shape = scene_shape(shape_index);
+  REF(Material) m = scene_material(shape.material);
   if ((m.flags & MATERIAL_ALPHA_TESTED) == 0u) return false;
   vec2 uv = mesh_hit_uv(shape, primitive, barycentrics);
   TexCoord c = tex_coord_mesh(uv, shape_index, primitive, barycentrics);

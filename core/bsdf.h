@@ -35,7 +35,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint bsdf_base_flags(Material m, TexCoord uv) {
+INLINE uint bsdf_base_flags(IN(Material) m, TexCoord uv) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_flags(m, uv);
@@ -74,7 +74,7 @@ INLINE uint bsdf_base_flags(Material m, TexCoord uv) {
 }
 
 // Delta lobes have neither a density nor a value: only BSDFs with smooth lobes appear here.
-INLINE vec3 bsdf_base_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_base_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_eval(m, uv, wi, wo);
@@ -103,7 +103,7 @@ INLINE vec3 bsdf_base_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return vec3(0.0f);
 }
 
-INLINE float bsdf_base_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_base_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_pdf(m, uv, wi, wo);
@@ -132,7 +132,7 @@ INLINE float bsdf_base_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return 0.0f;
 }
 
-INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_base_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_sample(m, uv, wi, u1, u2);
@@ -178,7 +178,8 @@ INLINE BsdfSample bsdf_base_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // A slot that no leaf material of the scene textures is skipped (TR_HAS_TEXTURED_SLOT: folded
 // by the GPU pipeline's specialization, so its lookup code is not even compiled), and so is a
 // material without textures.
-INLINE Material material_at(Material m, TexCoord uv) {
+INLINE Material material_at(IN(Material) stored, TexCoord uv) {
+  Material m = stored;
   if ((m.flags & MATERIAL_TEXTURED) == 0u) return m;
   UNROLL for (uint k = 0u; k <= MATERIAL_PARAM_COUNT; ++k) {
     if (!TR_HAS_TEXTURED_SLOT(k)) continue;
@@ -196,21 +197,21 @@ INLINE Material material_at(Material m, TexCoord uv) {
 }
 
 // Mask opacity of a material_at, clipped to [0, 1] as Mitsuba's MaskBSDF::eval_opacity.
-INLINE float bsdf_opacity(Material m) {
+INLINE float bsdf_opacity(IN(Material) m) {
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
     return clamp(m.opacity.value.x, 0.0f, 1.0f);
   return 1.0f;
 }
 
-INLINE uint bsdf_leaf_flags(Material m, TexCoord uv) {
+INLINE uint bsdf_leaf_flags(IN(Material) m, TexCoord uv) {
   uint flags = bsdf_base_flags(m, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_MASKED) && (m.flags & MATERIAL_MASKED) != 0u)
     flags |= BSDF_NULL;
   return flags;
 }
 
-INLINE vec3 bsdf_leaf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
-  m = material_at(m, uv);
+INLINE vec3 bsdf_leaf_eval(IN(Material) stored, TexCoord uv, vec3 wi, vec3 wo) {
+  Material m = material_at(stored, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -218,8 +219,8 @@ INLINE vec3 bsdf_leaf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m);
 }
 
-INLINE float bsdf_leaf_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
-  m = material_at(m, uv);
+INLINE float bsdf_leaf_pdf(IN(Material) stored, TexCoord uv, vec3 wi, vec3 wo) {
+  Material m = material_at(stored, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
@@ -227,8 +228,8 @@ INLINE float bsdf_leaf_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m);
 }
 
-INLINE BsdfSample bsdf_leaf_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
-  m = material_at(m, uv);
+INLINE BsdfSample bsdf_leaf_sample(IN(Material) stored, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+  Material m = material_at(stored, uv);
   float opacity = bsdf_opacity(m);
   if (u1 >= opacity) return bsdf_sample_make(-wi, 1.0f - opacity, vec3(1.0f), 1.0f, BSDF_NULL);
   u1 = u1 / opacity;
@@ -248,8 +249,8 @@ INLINE BsdfSample bsdf_leaf_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // (src/render/bsdf.cpp). `twosided` mirrors wi to the front (twosided.cpp); `mask` returns the
 // nested BSDF's (mask.cpp), without its opacity. The wrappers above a leaf:
 // bsdf_diffuse_reflectance.
-INLINE vec3 bsdf_leaf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
-  m = material_at(m, uv);
+INLINE vec3 bsdf_leaf_diffuse_reflectance(IN(Material) stored, TexCoord uv, vec3 wi) {
+  Material m = material_at(stored, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
     wi.z = abs(wi.z);
   switch (m.type) {
@@ -278,22 +279,22 @@ TR_NAMESPACE_END
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint bsdf_tree_flags(Material m, TexCoord uv) {
+INLINE uint bsdf_tree_flags(IN(Material) m, TexCoord uv) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_flags(m, uv);
   return bsdf_leaf_flags(m, uv);
 }
 
-INLINE vec3 bsdf_tree_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_tree_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_eval(m, uv, wi, wo);
   return bsdf_leaf_eval(m, uv, wi, wo);
 }
 
-INLINE float bsdf_tree_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_tree_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_pdf(m, uv, wi, wo);
   return bsdf_leaf_pdf(m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_tree_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_tree_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_sample(m, uv, wi, u1, u2);
   return bsdf_leaf_sample(m, uv, wi, u1, u2);
 }
@@ -303,17 +304,17 @@ INLINE BsdfSample bsdf_tree_sample(Material m, TexCoord uv, vec3 wi, float u1, v
 // scales the tree below it. Both keep their child and options in the same slots. The
 // bsdf_surface_* functions take the surface's differential geometry (bumpmap needs it); the
 // plain ones assume bsdf_surface_flat().
-INLINE bool bsdf_is_normalmap(Material m) {
+INLINE bool bsdf_is_normalmap(IN(Material) m) {
   return TR_HAS_BSDF(BSDF_NORMALMAP) && m.type == BSDF_NORMALMAP;
 }
 
-INLINE bool bsdf_is_bumpmap(Material m) {
+INLINE bool bsdf_is_bumpmap(IN(Material) m) {
   return TR_HAS_BSDF(BSDF_BUMPMAP) && m.type == BSDF_BUMPMAP;
 }
 
-INLINE bool bsdf_is_perturbed(Material m) { return bsdf_is_normalmap(m) || bsdf_is_bumpmap(m); }
+INLINE bool bsdf_is_perturbed(IN(Material) m) { return bsdf_is_normalmap(m) || bsdf_is_bumpmap(m); }
 
-INLINE Frame bsdf_perturbed_frame(Material m, BsdfSurface g, TexCoord uv, vec3 wi) {
+INLINE Frame bsdf_perturbed_frame(IN(Material) m, IN(BsdfSurface) g, TexCoord uv, vec3 wi) {
   if (bsdf_is_bumpmap(m)) return bumpmap_frame(m, g, uv, wi);
   return normalmap_frame(m, uv, wi);
 }
@@ -323,7 +324,7 @@ INLINE uint bsdf_flags(Material m, TexCoord uv) {
   return bsdf_tree_flags(m, uv);
 }
 
-INLINE vec3 bsdf_surface_eval(BsdfSurface g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_surface_eval(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
   float scale = 1.0f;
   if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
@@ -341,7 +342,7 @@ INLINE vec3 bsdf_surface_eval(BsdfSurface g, Material m, TexCoord uv, vec3 wi, v
   return bsdf_tree_eval(m, uv, wi, wo) * scale;
 }
 
-INLINE float bsdf_surface_pdf(BsdfSurface g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_surface_pdf(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
   if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
       wo.z = mulsign(wo.z, wi.z);
@@ -357,7 +358,7 @@ INLINE float bsdf_surface_pdf(BsdfSurface g, Material m, TexCoord uv, vec3 wi, v
   return bsdf_tree_pdf(m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_surface_sample(BsdfSurface g, Material m, TexCoord uv, vec3 wi, float u1,
+INLINE BsdfSample bsdf_surface_sample(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, float u1,
                                       vec2 u2) {
   bool perturbed = bsdf_is_perturbed(m);
   float wi_z = wi.z;
@@ -394,30 +395,30 @@ INLINE vec3 bsdf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
   return bsdf_leaf_diffuse_reflectance(m, uv, wi);
 }
 
-INLINE vec3 bsdf_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   return bsdf_surface_eval(bsdf_surface_flat(), m, uv, wi, wo);
 }
 
-INLINE float bsdf_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   return bsdf_surface_pdf(bsdf_surface_flat(), m, uv, wi, wo);
 }
 
-INLINE BsdfSample bsdf_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   return bsdf_surface_sample(bsdf_surface_flat(), m, uv, wi, u1, u2);
 }
 
 // The same at a point known only by its uv (no mesh attributes).
-INLINE uint bsdf_flags(Material m, vec2 uv) { return bsdf_flags(m, tex_coord(uv)); }
+INLINE uint bsdf_flags(IN(Material) m, vec2 uv) { return bsdf_flags(m, tex_coord(uv)); }
 
-INLINE vec3 bsdf_eval(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE vec3 bsdf_eval(IN(Material) m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_eval(m, tex_coord(uv), wi, wo);
 }
 
-INLINE float bsdf_pdf(Material m, vec2 uv, vec3 wi, vec3 wo) {
+INLINE float bsdf_pdf(IN(Material) m, vec2 uv, vec3 wi, vec3 wo) {
   return bsdf_pdf(m, tex_coord(uv), wi, wo);
 }
 
-INLINE BsdfSample bsdf_sample(Material m, vec2 uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample bsdf_sample(IN(Material) m, vec2 uv, vec3 wi, float u1, vec2 u2) {
   return bsdf_sample(m, tex_coord(uv), wi, u1, u2);
 }
 

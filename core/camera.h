@@ -19,7 +19,7 @@ TR_NAMESPACE_BEGIN
 
 // Primary ray through film position `film` (pixels of the full film); u_lens feeds the
 // thin lens's aperture sample.
-INLINE Ray camera_ray(Camera c, vec2 film, vec2 u_lens) {
+INLINE Ray camera_ray(IN(Camera) c, vec2 film, vec2 u_lens) {
   vec2 s = film / c.film_size;
   if (c.type == SENSOR_ORTHOGRAPHIC) {
     // orthographic.cpp: origin on the near plane through to_world (scale included), direction

@@ -21,7 +21,7 @@ TR_NAMESPACE_BEGIN
 // Chooses the emitter a light sample from ref_p starts from, with its probability in pmf
 // (NO_INDEX when none can light ref_p). One 2D number whatever the selection: u.x picks, u.y is
 // an alias table's second choice.
-INLINE uint select_emitter(SceneGlobals g, vec3 ref_p, vec2 u, OUT(float) pmf) {
+INLINE uint select_emitter(IN(SceneGlobals) g, vec3 ref_p, vec2 u, OUT(float) pmf) {
   if (!TR_HAS_EMITTER_SELECTION(EMITTER_SELECTION_BVH) ||
       g.emitter_selection != EMITTER_SELECTION_BVH)
     return alias_sample(g.emitter_alias_offset, g.emitter_count, u, pmf);
@@ -39,7 +39,7 @@ INLINE uint select_emitter(SceneGlobals g, vec3 ref_p, vec2 u, OUT(float) pmf) {
 }
 
 // The probability with which select_emitter chooses emitter `index` from ref_p.
-INLINE float emitter_pmf(SceneGlobals g, vec3 ref_p, uint index) {
+INLINE float emitter_pmf(IN(SceneGlobals) g, vec3 ref_p, uint index) {
   if (!TR_HAS_EMITTER_SELECTION(EMITTER_SELECTION_BVH) ||
       g.emitter_selection != EMITTER_SELECTION_BVH)
     return alias_pmf(g.emitter_alias_offset, index);
@@ -52,12 +52,12 @@ INLINE float emitter_pmf(SceneGlobals g, vec3 ref_p, uint index) {
 }
 
 INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
-  SceneGlobals g = scene_globals();
+  REF(SceneGlobals) g = scene_globals();
   if (g.emitter_count == 0u) return emitter_sample_failed();
   float pmf;
   uint index = select_emitter(g, ref_p, rng_next_2d(rng), pmf);
   if (index == NO_INDEX) return emitter_sample_failed();
-  Emitter e = scene_emitter(index);
+  REF(Emitter) e = scene_emitter(index);
   EmitterSample s = emitter_sample_failed();
   if (TR_HAS_EMITTER(EMITTER_AREA) && e.type == EMITTER_AREA) {
     s = sample_area_emitter(e, ref_p, rng);
@@ -84,22 +84,22 @@ INLINE EmitterSample sample_emitter(vec3 ref_p, INOUT(Rng) rng) {
 
 // Density of sample_emitter producing the surface point of `si` (an area emitter hit)
 // from ref_p.
-INLINE float pdf_emitter_surface(vec3 ref_p, SurfaceInteraction si) {
-  Emitter e = scene_emitter(si.emitter);
+INLINE float pdf_emitter_surface(vec3 ref_p, IN(SurfaceInteraction) si) {
+  REF(Emitter) e = scene_emitter(si.emitter);
   return emitter_pmf(scene_globals(), ref_p, si.emitter) *
          pdf_area_emitter(e, ref_p, si.p, si.frame.n);
 }
 
 // Radiance an area emitter hit sends back along si.wi.
-INLINE vec3 eval_emitter_surface(SurfaceInteraction si) {
+INLINE vec3 eval_emitter_surface(IN(SurfaceInteraction) si) {
   return eval_area_emitter(scene_emitter(si.emitter), si.wi);
 }
 
 // The environment (constant or envmap) seen along direction d; zero without one.
 INLINE vec3 eval_environment(vec3 d) {
-  SceneGlobals g = scene_globals();
+  REF(SceneGlobals) g = scene_globals();
   if (g.environment == NO_INDEX) return vec3(0.0f);
-  Emitter e = scene_emitter(g.environment);
+  REF(Emitter) e = scene_emitter(g.environment);
   if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT) return e.radiance;
   if (TR_HAS_EMITTER(EMITTER_ENVMAP) && e.type == EMITTER_ENVMAP) return eval_envmap_emitter(e, d);
   return vec3(0.0f);
@@ -107,9 +107,9 @@ INLINE vec3 eval_environment(vec3 d) {
 
 // Density of sample_emitter producing direction d through the environment.
 INLINE float pdf_environment(vec3 d) {
-  SceneGlobals g = scene_globals();
+  REF(SceneGlobals) g = scene_globals();
   if (g.environment == NO_INDEX) return 0.0f;
-  Emitter e = scene_emitter(g.environment);
+  REF(Emitter) e = scene_emitter(g.environment);
   // An infinite emitter's selection does not depend on the reference point.
   float pmf = emitter_pmf(g, vec3(0.0f), g.environment);
   if (TR_HAS_EMITTER(EMITTER_CONSTANT) && e.type == EMITTER_CONSTANT)

@@ -77,7 +77,7 @@ INLINE float sample_filter_axis(float r, float u, float lo, float hi, OUT(float)
 
 // Position on the film (full-film pixels) of a sample of `pixel` (crop-window pixels) and its
 // sign in the pixel's self-normalized estimate; `c` is the scene's camera.
-INLINE vec2 sample_film_position(Camera c, uvec2 pixel, vec2 u, OUT(float) sign) {
+INLINE vec2 sample_film_position(IN(Camera) c, uvec2 pixel, vec2 u, OUT(float) sign) {
   vec2 center = c.crop_offset + vec2(pixel) + vec2(0.5f);
   if (c.rfilter == RFILTER_BOX) {
     sign = 1.0f;

@@ -49,8 +49,8 @@
 TR_NAMESPACE_BEGIN
 
 INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
-  SceneGlobals g = scene_globals();
-  Camera c = g.camera;
+  REF(SceneGlobals) g = scene_globals();
+  REF(Camera) c = g.camera;
   PathState s;
   s.rng = rng_init_sampler(pixel.y * c.width + pixel.x, sample_index, seed, g.sampler_params);
   vec2 film = sample_film_position(c, pixel, rng_next_2d(s.rng), s.film_sign);
@@ -79,7 +79,7 @@ INLINE PathState integrator_begin(uvec2 pixel, uint sample_index, uint seed) {
 
 INLINE bool integrator_alive(PathState s) { return s.alive != 0u; }
 
-INLINE ShadingPoint shading_point(SurfaceInteraction si) {
+INLINE ShadingPoint shading_point(IN(SurfaceInteraction) si) {
   ShadingPoint sp;
   sp.frame = si.frame;
   sp.p = si.p;
@@ -94,8 +94,10 @@ INLINE ShadingPoint shading_point(SurfaceInteraction si) {
   return sp;
 }
 
-INLINE BsdfSurface bsdf_surface(ShadingPoint sp) {
-  BsdfSurface g;
+// The surface a BSDF sees in its local frame; only `bumpmap` reads more than the flat one.
+INLINE BsdfSurface bsdf_surface(IN(ShadingPoint) sp, IN(Material) m) {
+  BsdfSurface g = bsdf_surface_flat();
+  if (!bsdf_is_bumpmap(m)) return g;
   g.dp_du = frame_to_local(sp.frame, sp.dp_du);
   g.dp_dv = frame_to_local(sp.frame, sp.dp_dv);
   g.ng = frame_to_local(sp.frame, sp.ng);
@@ -104,7 +106,7 @@ INLINE BsdfSurface bsdf_surface(ShadingPoint sp) {
 
 // Russian roulette with Mitsuba's survival probability min(max(throughput) eta^2, 0.95);
 // survivors are divided by it (pbrt-v4 §14.1.4).
-INLINE bool russian_roulette_survives(INOUT(PathState) s, Integrator it) {
+INLINE bool russian_roulette_survives(INOUT(PathState) s, IN(Integrator) it) {
   float throughput_max = max_component(s.throughput);
   if (int(s.depth) >= it.rr_depth) {
     float q = min(throughput_max * s.eta * s.eta, 0.95f);
@@ -115,7 +117,7 @@ INLINE bool russian_roulette_survives(INOUT(PathState) s, Integrator it) {
 }
 
 INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
-  Integrator it = scene_globals().integrator;
+  REF(Integrator) it = scene_globals().integrator;
   if (TR_HAS_INTEGRATOR(INTEGRATOR_AMBIENT_OCCLUSION) && it.type == INTEGRATOR_AMBIENT_OCCLUSION)
     return ambient_occlusion_step(s, hit, it);
   bool direct = TR_HAS_INTEGRATOR(INTEGRATOR_DIRECT) && it.type == INTEGRATOR_DIRECT;
@@ -178,8 +180,9 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
     }
     s.anchor = shading_point(si);
   }
-  ShadingPoint sp = s.anchor;
-  Material m = scene_material(sp.material);
+  REF(ShadingPoint) sp = s.anchor;
+  REF(Material) m = scene_material(sp.material);
+  BsdfSurface surface = bsdf_surface(sp, m);
   vec3 base = direct ? vec3(1.0f) : s.throughput;
 
   // ---- Emitter sampling.
@@ -190,12 +193,11 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);
-      vec3 f = bsdf_surface_eval(bsdf_surface(sp), m, sp.tex, sp.wi, wo);
-      float mis = es.delta != 0u
-                      ? 1.0f
-                      : power_heuristic(
-                            es.pdf * frac_emitter,
-                            bsdf_surface_pdf(bsdf_surface(sp), m, sp.tex, sp.wi, wo) * frac_bsdf);
+      vec3 f = bsdf_surface_eval(surface, m, sp.tex, sp.wi, wo);
+      float mis = es.delta != 0u ? 1.0f
+                                 : power_heuristic(
+                                       es.pdf * frac_emitter,
+                                       bsdf_surface_pdf(surface, m, sp.tex, sp.wi, wo) * frac_bsdf);
       sr.contribution = base * f * es.weight * (mis / n_emitter);
       if (any(notEqual(sr.contribution, vec3(0.0f)))) {
         sr.enabled = 1u;
@@ -210,7 +212,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
   s.prev_p = sp.p;
   if (round < uint(n_bsdf)) {
     float u1 = rng_next_1d(s.rng);
-    BsdfSample bs = bsdf_surface_sample(bsdf_surface(sp), m, sp.tex, sp.wi, u1, rng_next_2d(s.rng));
+    BsdfSample bs = bsdf_surface_sample(surface, m, sp.tex, sp.wi, u1, rng_next_2d(s.rng));
     s.ray = spawn_ray(sp.p, sp.ng, frame_to_world(sp.frame, bs.wo));
     s.throughput = base * bs.weight;
     s.eta *= bs.eta;

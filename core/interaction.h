@@ -33,7 +33,7 @@ struct SurfaceInteraction {
 };
 
 // Where the textures of the hit surface are evaluated (mesh attributes need the triangle).
-INLINE TexCoord surface_tex_coord(SurfaceInteraction si) {
+INLINE TexCoord surface_tex_coord(IN(SurfaceInteraction) si) {
   return tex_coord_mesh(si.uv, si.shape, si.primitive, si.barycentrics);
 }
 
@@ -51,8 +51,8 @@ INLINE Frame shading_frame(vec3 n, vec3 dp_du) {
 }
 
 INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
-  Shape shape = scene_shape(hit.shape);
-  Instance inst = scene_instance(hit.instance);
+  REF(Shape) shape = scene_shape(hit.shape);
+  REF(Instance) inst = scene_instance(hit.instance);
   SurfaceInteraction si;
   si.t = hit.t;
   si.shape = hit.shape;

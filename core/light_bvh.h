@@ -25,7 +25,7 @@ INLINE float sin_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
 // cosine of the smallest angle between the direction from the node to p and the node's emission
 // cone, once widened by the angle theta_b its sphere subtends from p. Zero only where nothing
 // below the node can send light towards p.
-INLINE float light_node_importance(LightNode n, vec3 p) {
+INLINE float light_node_importance(IN(LightNode) n, vec3 p) {
   vec3 v = p - n.centre;
   float d2 = dot(v, v);
   float cos_theta_p = 1.0f;
@@ -62,8 +62,8 @@ INLINE uint light_bvh_sample(uint root, vec3 p, float u, OUT(float) pmf) {
   if (!(light_node_importance(n, p) > 0.0f)) return NO_INDEX;
   float prob = 1.0f;
   while (n.child0 != NO_INDEX) {
-    LightNode c0 = scene_light_node(n.child0);
-    LightNode c1 = scene_light_node(n.child1);
+    REF(LightNode) c0 = scene_light_node(n.child0);
+    REF(LightNode) c1 = scene_light_node(n.child1);
     float i0 = light_node_importance(c0, p);
     float i1 = light_node_importance(c1, p);
     float p0 = light_child_probability(i0, i1, true);
@@ -93,7 +93,7 @@ INLINE float light_bvh_pmf(uint root, vec3 p, uint emitter) {
   if (node != root && n.parent == NO_INDEX) return 0.0f;
   float prob = 1.0f;
   while (node != root) {
-    LightNode parent = scene_light_node(n.parent);
+    REF(LightNode) parent = scene_light_node(n.parent);
     float i0 = light_node_importance(scene_light_node(parent.child0), p);
     float i1 = light_node_importance(scene_light_node(parent.child1), p);
     prob *= light_child_probability(i0, i1, parent.child0 == node);

@@ -18,6 +18,11 @@
 #define INLINE inline
 #define OUT(T) T&
 #define INOUT(T) T&
+// A read-only parameter (IN) or local/returned view (REF) of a scene record: a reference on the
+// CPU, where copying the larger records (Material 240 B, SceneGlobals 704 B) at every call cost
+// store-forwarding stalls; a value in GLSL, whose calls are inlined and copy nothing.
+#define IN(T) const T&
+#define REF(T) const T&
 #define PRECISE
 
 TR_NAMESPACE_BEGIN
@@ -35,6 +40,8 @@ TR_NAMESPACE_END
 #define INLINE
 #define OUT(T) out T
 #define INOUT(T) inout T
+#define IN(T) T
+#define REF(T) T
 #define PRECISE precise
 #extension GL_EXT_control_flow_attributes : enable
 

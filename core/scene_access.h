@@ -10,15 +10,15 @@
 
 TR_NAMESPACE_BEGIN
 
-SceneGlobals scene_globals();
-Material scene_material(uint index);
-Texture scene_texture(uint index);
+REF(SceneGlobals) scene_globals();
+REF(Material) scene_material(uint index);
+REF(Texture) scene_texture(uint index);
 vec4 scene_texel(uint index);
-Emitter scene_emitter(uint index);
+REF(Emitter) scene_emitter(uint index);
 AliasEntry scene_alias(uint index);
-LightNode scene_light_node(uint index);
-Shape scene_shape(uint index);
-Instance scene_instance(uint index);
+REF(LightNode) scene_light_node(uint index);
+REF(Shape) scene_shape(uint index);
+REF(Instance) scene_instance(uint index);
 vec3 scene_position(uint vertex);
 vec3 scene_normal(uint vertex);
 vec2 scene_uv(uint vertex);

@@ -49,7 +49,7 @@ INLINE TexCoord tex_coord_mesh(vec2 uv, uint shape, uint primitive, vec2 barycen
 // A point known only by its uv (no mesh attributes).
 INLINE TexCoord tex_coord(vec2 uv) { return tex_coord_mesh(uv, NO_INDEX, 0u, vec2(0.0f)); }
 
-INLINE vec3 texture_texel(Texture t, int i, int j) {
+INLINE vec3 texture_texel(IN(Texture) t, int i, int j) {
   ivec2 size = ivec2(int(t.width), int(t.height));
   ivec2 p = ivec2(i, j);
   // One wrap per axis in a loop: every lookup of every textured parameter is inlined into the
@@ -58,7 +58,7 @@ INLINE vec3 texture_texel(Texture t, int i, int j) {
   return vec3(scene_texel(t.texel_offset + uint(p.y) * t.width + uint(p.x)));
 }
 
-INLINE vec2 texture_apply_to_uv(Texture t, vec2 uv) {
+INLINE vec2 texture_apply_to_uv(IN(Texture) t, vec2 uv) {
   vec3 h = vec3(uv.x, uv.y, 1.0f);
   return vec2(dot(vec3(t.to_uv[0]), h), dot(vec3(t.to_uv[1]), h));
 }
@@ -72,7 +72,7 @@ struct TexelQuad {
   vec2 w1;
 };
 
-INLINE TexelQuad texture_texels(Texture t, vec2 st) {
+INLINE TexelQuad texture_texels(IN(Texture) t, vec2 st) {
   bool nearest = t.filter_mode == FILTER_NEAREST;
   vec2 res = vec2(float(t.width), float(t.height));
   vec2 pos = nearest ? st * res : st * res - vec2(0.5f);
@@ -87,7 +87,7 @@ INLINE TexelQuad texture_texels(Texture t, vec2 st) {
 }
 
 INLINE vec3 eval_texture(uint texture, vec2 uv) {
-  Texture t = scene_texture(texture);
+  REF(Texture) t = scene_texture(texture);
   vec2 st = texture_apply_to_uv(t, uv);
   if (TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD) && t.type == TEXTURE_CHECKERBOARD) {
     // Mitsuba checkerboard: color0 where both fractional parts lie on the same side of 1/2.
@@ -117,8 +117,8 @@ INLINE vec3 mesh_attribute_value(uint offset, uint dim, uint i) {
 // `scale`. The mesh's table (Shape.attribute_table) holds, per attribute slot, the offset of
 // its values and their count per element; the loader checks that every mesh a mesh_attribute
 // texture can be evaluated on has the attribute, with 1 or 3 values (1 for scalar parameters).
-INLINE vec3 eval_mesh_attribute(Texture t, TexCoord c) {
-  Shape s = scene_shape(c.shape);
+INLINE vec3 eval_mesh_attribute(IN(Texture) t, TexCoord c) {
+  REF(Shape) s = scene_shape(c.shape);
   uint entry = s.attribute_table + 2u * t.attribute_slot;
   uint offset = scene_attribute(entry);
   uint dim = scene_attribute(entry + 1u);
@@ -139,7 +139,7 @@ INLINE vec3 eval_mesh_attribute(Texture t, TexCoord c) {
 // A constant, or the texture lookup when the value is textured.
 INLINE vec3 eval_textured(TexturedValue v, TexCoord c) {
   if (TR_HAS_TEXTURE(TEXTURE_MESH_ATTRIBUTE) && v.texture != NO_INDEX) {
-    Texture t = scene_texture(v.texture);
+    REF(Texture) t = scene_texture(v.texture);
     if (t.type == TEXTURE_MESH_ATTRIBUTE) return eval_mesh_attribute(t, c);
   }
   if ((TR_HAS_TEXTURE(TEXTURE_BITMAP) || TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD)) &&
@@ -155,7 +155,7 @@ INLINE vec3 eval_textured(TexturedValue v, vec2 uv) { return eval_textured(v, te
 // texel-space partials go through the transpose of to_uv's linear part and are then scaled by
 // the resolution per component (exact for diagonal to_uv).
 INLINE vec2 eval_texture_1_grad(uint texture, vec2 uv) {
-  Texture t = scene_texture(texture);
+  REF(Texture) t = scene_texture(texture);
   if (t.filter_mode == FILTER_NEAREST) return vec2(0.0f);
   vec2 res = vec2(float(t.width), float(t.height));
   TexelQuad q = texture_texels(t, texture_apply_to_uv(t, uv));

@@ -10,15 +10,15 @@ const SceneBuffers* g_buffers = nullptr;
 
 void bind_scene_buffers(const SceneBuffers* buffers) { g_buffers = buffers; }
 
-SceneGlobals scene_globals() { return g_buffers->globals; }
-Material scene_material(uint i) { return g_buffers->materials[i]; }
-Texture scene_texture(uint i) { return g_buffers->textures[i]; }
+const SceneGlobals& scene_globals() { return g_buffers->globals; }
+const Material& scene_material(uint i) { return g_buffers->materials[i]; }
+const Texture& scene_texture(uint i) { return g_buffers->textures[i]; }
 vec4 scene_texel(uint i) { return g_buffers->texels[i]; }
-Emitter scene_emitter(uint i) { return g_buffers->emitters[i]; }
+const Emitter& scene_emitter(uint i) { return g_buffers->emitters[i]; }
 AliasEntry scene_alias(uint i) { return g_buffers->alias[i]; }
-LightNode scene_light_node(uint i) { return g_buffers->light_nodes[i]; }
-Shape scene_shape(uint i) { return g_buffers->shapes[i]; }
-Instance scene_instance(uint i) { return g_buffers->instances[i]; }
+const LightNode& scene_light_node(uint i) { return g_buffers->light_nodes[i]; }
+const Shape& scene_shape(uint i) { return g_buffers->shapes[i]; }
+const Instance& scene_instance(uint i) { return g_buffers->instances[i]; }
 vec3 scene_position(uint v) { return vec3(g_buffers->positions[v]); }
 vec3 scene_normal(uint v) { return vec3(g_buffers->normals[v]); }
 vec2 scene_uv(uint v) { return g_buffers->uvs[v]; }

@@ -32,11 +32,11 @@ TR_NAMESPACE_BEGIN
 // depth-first walk within BLEND_STACK_SIZE = BLEND_MAX_DEPTH + 1 entries.
 const uint BLEND_STACK_SIZE = BLEND_MAX_DEPTH + 1u;
 
-INLINE float blend_weight(Material m, TexCoord uv) {
+INLINE float blend_weight(IN(Material) m, TexCoord uv) {
   return clamp(eval_textured_1(m.param[BLEND_WEIGHT], uv), 0.0f, 1.0f);
 }
 
-INLINE uint blend_child(Material m, uint which) {
+INLINE uint blend_child(IN(Material) m, uint which) {
   return uint(m.param[which == 0u ? BLEND_BSDF_0 : BLEND_BSDF_1].value.x);
 }
 
@@ -58,7 +58,7 @@ INLINE void blend_push(INOUT(BlendStack) st, uint node, float weight, uint path,
   st.size += 1u;
 }
 
-INLINE void blend_push_children(INOUT(BlendStack) st, Material blend, TexCoord uv, float weight,
+INLINE void blend_push_children(INOUT(BlendStack) st, IN(Material) blend, TexCoord uv, float weight,
                                 uint path, uint inherited_flags) {
   // The loader bounds the nesting depth (BLEND_MAX_DEPTH), so the stack never overflows.
   if (st.size + 2u > BLEND_STACK_SIZE) return;
@@ -68,7 +68,7 @@ INLINE void blend_push_children(INOUT(BlendStack) st, Material blend, TexCoord u
   blend_push(st, blend_child(blend, 1u), weight * w, 2u * path + 1u, flags);
 }
 
-INLINE BlendStack blend_walk(Material root, TexCoord uv) {
+INLINE BlendStack blend_walk(IN(Material) root, TexCoord uv) {
   BlendStack st;
   st.size = 0u;
   blend_push_children(st, root, uv, 1.0f, 1u, 0u);
@@ -95,7 +95,7 @@ INLINE bool blend_next_leaf(INOUT(BlendStack) st, TexCoord uv, OUT(Material) lea
 }
 
 // Mitsuba's m_flags: the union of the children's flags, whatever the weight.
-INLINE uint blend_flags(Material m, TexCoord uv) {
+INLINE uint blend_flags(IN(Material) m, TexCoord uv) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -106,7 +106,7 @@ INLINE uint blend_flags(Material m, TexCoord uv) {
 }
 
 // blendbsdf.cpp's eval_diffuse_reflectance: (1 - w) first + w second, recursively.
-INLINE vec3 blend_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
+INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -117,7 +117,7 @@ INLINE vec3 blend_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
   return value;
 }
 
-INLINE vec3 blend_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 blend_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -128,7 +128,7 @@ INLINE vec3 blend_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return value;
 }
 
-INLINE float blend_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float blend_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
@@ -139,7 +139,7 @@ INLINE float blend_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return pdf;
 }
 
-INLINE BsdfSample blend_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   // Descend to one leaf, reusing u1 at each blend (child 1 when u1 <= w, as Mitsuba; the
   // rescaled u1 stays below 1 so that leaves see a sample in [0, 1)).
   Material node = m;

@@ -33,13 +33,13 @@ INLINE BsdfSurface bsdf_surface_flat() {
   return g;
 }
 
-INLINE vec2 bumpmap_gradient(Material m, TexCoord uv) {
+INLINE vec2 bumpmap_gradient(IN(Material) m, TexCoord uv) {
   return m.param[BUMPMAP_OPTIONS].value.z *
          eval_texture_1_grad(m.param[BUMPMAP_HEIGHT].texture, uv.uv);
 }
 
 // The perturbed frame relative to the shading frame, for incident direction wi.
-INLINE Frame bumpmap_frame(Material m, BsdfSurface g, TexCoord uv, vec3 wi) {
+INLINE Frame bumpmap_frame(IN(Material) m, IN(BsdfSurface) g, TexCoord uv, vec3 wi) {
   vec2 grad = bumpmap_gradient(m, uv);
   vec3 dp_du = vec3(g.dp_du.x, g.dp_du.y, grad.x);
   vec3 dp_dv = vec3(g.dp_dv.x, g.dp_dv.y, grad.y);

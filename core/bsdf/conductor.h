@@ -11,14 +11,14 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint conductor_flags(Material m, TexCoord uv) { return BSDF_DELTA_REFLECTION; }
+INLINE uint conductor_flags(IN(Material) m, TexCoord uv) { return BSDF_DELTA_REFLECTION; }
 
-INLINE vec3 conductor_fresnel(Material m, TexCoord uv, float cos_theta_i) {
+INLINE vec3 conductor_fresnel(IN(Material) m, TexCoord uv, float cos_theta_i) {
   return fresnel_conductor(cos_theta_i, m.param[CONDUCTOR_ETA].value, m.param[CONDUCTOR_K].value) *
          m.param[CONDUCTOR_SPECULAR_REFLECTANCE].value;
 }
 
-INLINE BsdfSample conductor_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample conductor_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (wi.z <= 0.0f) return bsdf_sample_failed();
   return bsdf_sample_make(reflect_local(wi), 1.0f, conductor_fresnel(m, uv, wi.z), 1.0f,
                           BSDF_DELTA_REFLECTION);

@@ -12,11 +12,11 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint dielectric_flags(Material m, TexCoord uv) {
+INLINE uint dielectric_flags(IN(Material) m, TexCoord uv) {
   return BSDF_DELTA_REFLECTION | BSDF_DELTA_TRANSMISSION;
 }
 
-INLINE BsdfSample dielectric_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample dielectric_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   float cos_theta_t;
   float eta_it;
   float eta_ti;

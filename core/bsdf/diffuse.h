@@ -9,19 +9,19 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint diffuse_flags(Material m, TexCoord uv) { return BSDF_DIFFUSE_REFLECTION; }
+INLINE uint diffuse_flags(IN(Material) m, TexCoord uv) { return BSDF_DIFFUSE_REFLECTION; }
 
-INLINE vec3 diffuse_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 diffuse_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
   return m.param[DIFFUSE_REFLECTANCE].value * (INV_PI * wo.z);
 }
 
-INLINE float diffuse_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float diffuse_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
   return square_to_cosine_hemisphere_pdf(wo);
 }
 
-INLINE BsdfSample diffuse_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample diffuse_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (wi.z <= 0.0f) return bsdf_sample_failed();
   vec3 wo = square_to_cosine_hemisphere(u2);
   float pdf = square_to_cosine_hemisphere_pdf(wo);

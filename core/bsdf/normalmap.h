@@ -20,12 +20,14 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint normalmap_child(Material m) { return uint(m.param[NORMALMAP_BSDF].value.x); }
+INLINE uint normalmap_child(IN(Material) m) { return uint(m.param[NORMALMAP_BSDF].value.x); }
 
-INLINE bool normalmap_shadowing(Material m) { return m.param[NORMALMAP_OPTIONS].value.y != 0.0f; }
+INLINE bool normalmap_shadowing(IN(Material) m) {
+  return m.param[NORMALMAP_OPTIONS].value.y != 0.0f;
+}
 
 // The perturbed frame relative to the shading frame, for incident direction wi.
-INLINE Frame normalmap_frame(Material m, TexCoord uv, vec3 wi) {
+INLINE Frame normalmap_frame(IN(Material) m, TexCoord uv, vec3 wi) {
   vec3 n = eval_textured(m.param[NORMALMAP_NORMALMAP], uv) * 2.0f - vec3(1.0f);
   n = perturbed_normal_flipped(n, wi, m.param[NORMALMAP_OPTIONS].value.x != 0.0f);
   float len2 = dot(n, n);

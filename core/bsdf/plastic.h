@@ -18,7 +18,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint plastic_flags(Material m, TexCoord uv) {
+INLINE uint plastic_flags(IN(Material) m, TexCoord uv) {
   return BSDF_DELTA_REFLECTION | BSDF_DIFFUSE_REFLECTION;
 }
 
@@ -35,14 +35,14 @@ INLINE float plastic_specular_probability(float reflectance, float specular_weig
 }
 
 // The diffuse base after internal reflections: R_d / (1 - F_dr R'), R' = R_d if nonlinear.
-INLINE vec3 plastic_diffuse_albedo(Material m, TexCoord uv, float internal_reflectance) {
+INLINE vec3 plastic_diffuse_albedo(IN(Material) m, TexCoord uv, float internal_reflectance) {
   vec3 diff = m.param[PLASTIC_DIFFUSE_REFLECTANCE].value;
   vec3 denom = (m.flags & MATERIAL_NONLINEAR) != 0u ? vec3(1.0f) - diff * internal_reflectance
                                                     : vec3(1.0f - internal_reflectance);
   return diff / denom;
 }
 
-INLINE vec3 plastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 plastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
   float f_i = fresnel_dielectric_reflectance(wi.z, m.eta);
   float f_o = fresnel_dielectric_reflectance(wo.z, m.eta);
@@ -51,14 +51,14 @@ INLINE vec3 plastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
          (square_to_cosine_hemisphere_pdf(wo) * (1.0f - f_i) * (1.0f - f_o) / (m.eta * m.eta));
 }
 
-INLINE float plastic_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float plastic_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
   float f_i = fresnel_dielectric_reflectance(wi.z, m.eta);
   float p_diffuse = 1.0f - plastic_specular_probability(f_i, m.extra);
   return square_to_cosine_hemisphere_pdf(wo) * p_diffuse;
 }
 
-INLINE BsdfSample plastic_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample plastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (wi.z <= 0.0f) return bsdf_sample_failed();
   float f_i = fresnel_dielectric_reflectance(wi.z, m.eta);
   float p_specular = plastic_specular_probability(f_i, m.extra);

@@ -21,17 +21,17 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint pplastic_flags(Material m, TexCoord uv) {
+INLINE uint pplastic_flags(IN(Material) m, TexCoord uv) {
   return BSDF_GLOSSY_REFLECTION | BSDF_DIFFUSE_REFLECTION;
 }
 
-INLINE Microfacet pplastic_distribution(Material m, TexCoord uv) {
+INLINE Microfacet pplastic_distribution(IN(Material) m, TexCoord uv) {
   return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, m.param[PPLASTIC_ALPHA_U].value.x,
                          m.param[PPLASTIC_ALPHA_V].value.x,
                          (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
-INLINE vec3 pplastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 pplastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
   float eta = m.param[PPLASTIC_ETA].value.x;
   Microfacet d = pplastic_distribution(m, uv);
@@ -44,7 +44,7 @@ INLINE vec3 pplastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
          m.param[PLASTIC_DIFFUSE_REFLECTANCE].value * (transmitted * INV_PI * wo.z);
 }
 
-INLINE float pplastic_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float pplastic_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
   vec3 h = normalize(wo + wi);
   float specular = 0.0f;
@@ -54,7 +54,7 @@ INLINE float pplastic_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return m.extra * specular + (1.0f - m.extra) * square_to_cosine_hemisphere_pdf(wo);
 }
 
-INLINE BsdfSample pplastic_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample pplastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (wi.z <= 0.0f) return bsdf_sample_failed();
   bool specular = u1 < m.extra;
   vec3 wo = specular ? reflect_about(wi, microfacet_sample(pplastic_distribution(m, uv), wi, u2))

@@ -46,7 +46,7 @@ struct PrincipledParams {
   float clearcoat_rate;  // clearcoat_sampling_rate
 };
 
-INLINE PrincipledParams principled_params(Material m, TexCoord uv) {
+INLINE PrincipledParams principled_params(IN(Material) m, TexCoord uv) {
   PrincipledParams p;
   p.base_color = m.param[PRINCIPLED_BASE_COLOR].value;
   p.roughness = m.param[PRINCIPLED_ROUGHNESS].value.x;
@@ -67,7 +67,7 @@ INLINE PrincipledParams principled_params(Material m, TexCoord uv) {
   return p;
 }
 
-INLINE uint principled_flags(Material m, TexCoord uv) {
+INLINE uint principled_flags(IN(Material) m, TexCoord uv) {
   TexturedValue t = m.param[PRINCIPLED_SPEC_TRANS];
   bool transmits = t.texture != NO_INDEX || t.value.x > 0.0f;
   return BSDF_DIFFUSE_REFLECTION | BSDF_GLOSSY_REFLECTION |
@@ -316,15 +316,15 @@ INLINE BsdfSample principled_sample_params(PrincipledParams p, vec3 wi, float u1
                             eta, lobe);
 }
 
-INLINE vec3 principled_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 principled_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   return principled_eval_params(principled_params(m, uv), wi, wo);
 }
 
-INLINE float principled_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float principled_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   return principled_pdf_params(principled_params(m, uv), wi, wo);
 }
 
-INLINE BsdfSample principled_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample principled_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   return principled_sample_params(principled_params(m, uv), wi, u1, u2);
 }
 

@@ -13,15 +13,15 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint roughconductor_flags(Material m, TexCoord uv) { return BSDF_GLOSSY_REFLECTION; }
+INLINE uint roughconductor_flags(IN(Material) m, TexCoord uv) { return BSDF_GLOSSY_REFLECTION; }
 
-INLINE Microfacet roughconductor_distribution(Material m, TexCoord uv) {
+INLINE Microfacet roughconductor_distribution(IN(Material) m, TexCoord uv) {
   return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, m.param[CONDUCTOR_ALPHA_U].value.x,
                          m.param[CONDUCTOR_ALPHA_V].value.x,
                          (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
-INLINE vec3 roughconductor_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 roughconductor_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
   Microfacet d = roughconductor_distribution(m, uv);
   vec3 h = normalize(wi + wo);
@@ -33,7 +33,7 @@ INLINE vec3 roughconductor_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return F * m.param[CONDUCTOR_SPECULAR_REFLECTANCE].value * (D * G / (4.0f * wi.z));
 }
 
-INLINE float roughconductor_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float roughconductor_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   vec3 h = normalize(wi + wo);
   if (wi.z <= 0.0f || wo.z <= 0.0f || dot(wi, h) <= 0.0f || dot(wo, h) <= 0.0f) return 0.0f;
   Microfacet d = roughconductor_distribution(m, uv);
@@ -41,7 +41,7 @@ INLINE float roughconductor_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
 }
 
-INLINE BsdfSample roughconductor_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample roughconductor_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (wi.z <= 0.0f) return bsdf_sample_failed();
   vec3 h = microfacet_sample(roughconductor_distribution(m, uv), wi, u2);
   vec3 wo = reflect_about(wi, h);

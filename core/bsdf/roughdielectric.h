@@ -18,11 +18,11 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint roughdielectric_flags(Material m, TexCoord uv) {
+INLINE uint roughdielectric_flags(IN(Material) m, TexCoord uv) {
   return BSDF_GLOSSY_REFLECTION | BSDF_GLOSSY_TRANSMISSION;
 }
 
-INLINE Microfacet roughdielectric_distribution(Material m, TexCoord uv) {
+INLINE Microfacet roughdielectric_distribution(IN(Material) m, TexCoord uv) {
   return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, m.param[DIELECTRIC_ALPHA_U].value.x,
                          m.param[DIELECTRIC_ALPHA_V].value.x,
                          (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
@@ -49,7 +49,7 @@ INLINE vec3 roughdielectric_half_vector(vec3 wi, vec3 wo, float eta) {
   return h.z >= 0.0f ? h : -h;
 }
 
-INLINE vec3 roughdielectric_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 roughdielectric_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   float cos_i = wi.z;
   if (cos_i == 0.0f) return vec3(0.0f);
   bool reflect = cos_i * wo.z > 0.0f;
@@ -90,7 +90,7 @@ INLINE float roughdielectric_pdf_half(Microfacet d, vec3 wi, vec3 wo, vec3 h, fl
   return prob * abs(dh_dwo);
 }
 
-INLINE float roughdielectric_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float roughdielectric_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   float cos_i = wi.z;
   if (cos_i == 0.0f) return 0.0f;
   bool reflect = cos_i * wo.z > 0.0f;
@@ -103,7 +103,7 @@ INLINE float roughdielectric_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return pdf < FLOAT_MAX ? pdf : 0.0f;
 }
 
-INLINE BsdfSample roughdielectric_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample roughdielectric_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   float cos_i = wi.z;
   if (cos_i == 0.0f) return bsdf_sample_failed();
   Microfacet d = roughdielectric_distribution(m, uv);

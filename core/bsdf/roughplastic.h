@@ -29,19 +29,19 @@ TR_NAMESPACE_BEGIN
 
 const uint ROUGHPLASTIC_TABLE = 3u;  // Material.param slot of the precomputed terms
 
-INLINE uint roughplastic_flags(Material m, TexCoord uv) {
+INLINE uint roughplastic_flags(IN(Material) m, TexCoord uv) {
   return BSDF_GLOSSY_REFLECTION | BSDF_DIFFUSE_REFLECTION;
 }
 
-INLINE Microfacet roughplastic_distribution(Material m) {
+INLINE Microfacet roughplastic_distribution(IN(Material) m) {
   float alpha = m.param[PLASTIC_ALPHA].value.x;
   return microfacet_make((m.flags & MATERIAL_BECKMANN) != 0u, alpha, alpha,
                          (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
 // T(cos_theta) by linear interpolation between the table entries (Mitsuba's lerp_gather).
-INLINE float roughplastic_transmittance(Material m, float cos_theta) {
-  Texture table = scene_texture(m.param[ROUGHPLASTIC_TABLE].texture);
+INLINE float roughplastic_transmittance(IN(Material) m, float cos_theta) {
+  REF(Texture) table = scene_texture(m.param[ROUGHPLASTIC_TABLE].texture);
   float x = cos_theta * float(ROUGHPLASTIC_TABLE_RES - 1u);
   uint index = min(uint(x), ROUGHPLASTIC_TABLE_RES - 2u);
   float v0 = scene_texel(table.texel_offset + index).x;
@@ -49,7 +49,7 @@ INLINE float roughplastic_transmittance(Material m, float cos_theta) {
   return mix(v0, v1, x - float(index));
 }
 
-INLINE vec3 roughplastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE vec3 roughplastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
   Microfacet d = roughplastic_distribution(m);
   vec3 h = normalize(wo + wi);
@@ -62,7 +62,7 @@ INLINE vec3 roughplastic_eval(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return value + diff * (INV_PI * wo.z * t_i * t_o / (m.eta * m.eta));
 }
 
-INLINE float roughplastic_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE float roughplastic_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
   float t_i = roughplastic_transmittance(m, wi.z);
   float p_specular = plastic_specular_probability(1.0f - t_i, m.extra);
@@ -73,7 +73,7 @@ INLINE float roughplastic_pdf(Material m, TexCoord uv, vec3 wi, vec3 wo) {
   return p_specular * specular + (1.0f - p_specular) * square_to_cosine_hemisphere_pdf(wo);
 }
 
-INLINE BsdfSample roughplastic_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample roughplastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   if (wi.z <= 0.0f) return bsdf_sample_failed();
   float t_i = roughplastic_transmittance(m, wi.z);
   float p_specular = plastic_specular_probability(1.0f - t_i, m.extra);

@@ -14,11 +14,11 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE uint thindielectric_flags(Material m, TexCoord uv) {
+INLINE uint thindielectric_flags(IN(Material) m, TexCoord uv) {
   return BSDF_DELTA_REFLECTION | BSDF_NULL;
 }
 
-INLINE BsdfSample thindielectric_sample(Material m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
+INLINE BsdfSample thindielectric_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
   float r = fresnel_dielectric_reflectance(abs(wi.z), m.eta);
   r *= 2.0f / (1.0f + r);
   if (u1 <= r) {

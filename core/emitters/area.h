@@ -19,10 +19,10 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE vec3 sphere_center(Shape s) {
+INLINE vec3 sphere_center(IN(Shape) s) {
   return vec3(s.to_world[0].w, s.to_world[1].w, s.to_world[2].w);
 }
-INLINE float sphere_radius(Shape s) {
+INLINE float sphere_radius(IN(Shape) s) {
   return length(vec3(s.to_world[0].x, s.to_world[1].x, s.to_world[2].x));
 }
 
@@ -31,7 +31,7 @@ const float SMALL_CONE_SIN2 = 0.00068523f;
 
 // 1 - cos(theta_max) of the cone of directions from p that hits the sphere, accurate for
 // small cones; returns false when p is inside (or on) the sphere, where no cone exists.
-INLINE bool sphere_cone(Shape s, vec3 p, OUT(float) one_minus_cos_max) {
+INLINE bool sphere_cone(IN(Shape) s, vec3 p, OUT(float) one_minus_cos_max) {
   vec3 c = sphere_center(s);
   float r = sphere_radius(s);
   float dist2 = dot(c - p, c - p);
@@ -44,7 +44,8 @@ INLINE bool sphere_cone(Shape s, vec3 p, OUT(float) one_minus_cos_max) {
 
 // A point on the shape, uniform in area, with its normal (flip_normals applied; mesh shading
 // normals interpolated where present, as Mitsuba's Mesh::sample_position).
-INLINE void sample_shape_area(Emitter e, Shape s, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
+INLINE void sample_shape_area(IN(Emitter) e, IN(Shape) s, INOUT(Rng) rng, OUT(vec3) p,
+                              OUT(vec3) n) {
   if (TR_HAS_SHAPE(SHAPE_MESH) && s.type == SHAPE_MESH) {
     float pmf;
     uint tri = alias_sample(e.alias_offset, e.alias_count, rng_next_2d(rng), pmf);
@@ -84,9 +85,9 @@ INLINE void sample_shape_area(Emitter e, Shape s, INOUT(Rng) rng, OUT(vec3) p, O
   if ((s.flags & SHAPE_FLIP_NORMALS) != 0u) n = -n;
 }
 
-INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) {
+INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) rng) {
   EmitterSample s = emitter_sample_failed();
-  Shape shape = scene_shape(e.shape);
+  REF(Shape) shape = scene_shape(e.shape);
   float one_minus_cos_max;
   if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE &&
       sphere_cone(shape, ref_p, one_minus_cos_max)) {
@@ -143,8 +144,8 @@ INLINE EmitterSample sample_area_emitter(Emitter e, vec3 ref_p, INOUT(Rng) rng) 
 
 // Solid-angle density with which sample_area_emitter produces the point p (normal n)
 // from ref_p.
-INLINE float pdf_area_emitter(Emitter e, vec3 ref_p, vec3 p, vec3 n) {
-  Shape shape = scene_shape(e.shape);
+INLINE float pdf_area_emitter(IN(Emitter) e, vec3 ref_p, vec3 p, vec3 n) {
+  REF(Shape) shape = scene_shape(e.shape);
   float one_minus_cos_max;
   if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE &&
       sphere_cone(shape, ref_p, one_minus_cos_max))
@@ -157,7 +158,7 @@ INLINE float pdf_area_emitter(Emitter e, vec3 ref_p, vec3 p, vec3 n) {
 }
 
 // Radiance leaving the emitter towards wi (local shading frame of the emitter's surface).
-INLINE vec3 eval_area_emitter(Emitter e, vec3 wi_local) {
+INLINE vec3 eval_area_emitter(IN(Emitter) e, vec3 wi_local) {
   return wi_local.z > 0.0f ? e.radiance : vec3(0.0f);
 }
 

@@ -9,7 +9,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE EmitterSample sample_constant_emitter(Emitter e, vec3 ref_p, vec2 u) {
+INLINE EmitterSample sample_constant_emitter(IN(Emitter) e, vec3 ref_p, vec2 u) {
   EmitterSample s = emitter_sample_failed();
   s.d = square_to_uniform_sphere(u);
   s.dist = FLOAT_MAX;

@@ -8,7 +8,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE EmitterSample sample_directional_emitter(Emitter e, vec3 ref_p) {
+INLINE EmitterSample sample_directional_emitter(IN(Emitter) e, vec3 ref_p) {
   EmitterSample s = emitter_sample_failed();
   s.d = -e.direction;
   s.dist = FLOAT_MAX;

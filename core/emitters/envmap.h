@@ -34,8 +34,8 @@ INLINE vec3 envmap_uv_to_direction(vec2 uv) {
   return vec3(sin(phi) * st, cos(theta), -cos(phi) * st);
 }
 
-INLINE vec3 envmap_lookup(Emitter e, vec2 uv) {
-  Texture tex = scene_texture(e.texture);
+INLINE vec3 envmap_lookup(IN(Emitter) e, vec2 uv) {
+  REF(Texture) tex = scene_texture(e.texture);
   float w = float(tex.width);
   float h = float(tex.height);
   float u = uv.x - 0.5f / w;
@@ -54,13 +54,13 @@ INLINE vec3 envmap_lookup(Emitter e, vec2 uv) {
 }
 
 // Radiance arriving along -d_world, i.e. seen when looking in direction d_world.
-INLINE vec3 eval_envmap_emitter(Emitter e, vec3 d_world) {
+INLINE vec3 eval_envmap_emitter(IN(Emitter) e, vec3 d_world) {
   vec3 d = transform_vector(e.to_local[0], e.to_local[1], e.to_local[2], d_world);
   return envmap_lookup(e, envmap_direction_to_uv(d));
 }
 
-INLINE float pdf_envmap_emitter(Emitter e, vec3 d_world) {
-  Texture tex = scene_texture(e.texture);
+INLINE float pdf_envmap_emitter(IN(Emitter) e, vec3 d_world) {
+  REF(Texture) tex = scene_texture(e.texture);
   vec3 d = transform_vector(e.to_local[0], e.to_local[1], e.to_local[2], d_world);
   vec2 uv = envmap_direction_to_uv(d);
   // From the horizontal components: sqrt(1 - y^2) cancels to 0 within 3e-4 rad of the poles,
@@ -73,9 +73,9 @@ INLINE float pdf_envmap_emitter(Emitter e, vec3 d_world) {
   return pmf * float(tex.width) * float(tex.height) / (2.0f * PI * PI * sin_theta);
 }
 
-INLINE EmitterSample sample_envmap_emitter(Emitter e, vec3 ref_p, vec2 u_cell, vec2 u_pos) {
+INLINE EmitterSample sample_envmap_emitter(IN(Emitter) e, vec3 ref_p, vec2 u_cell, vec2 u_pos) {
   EmitterSample s = emitter_sample_failed();
-  Texture tex = scene_texture(e.texture);
+  REF(Texture) tex = scene_texture(e.texture);
   float pmf;
   uint cell = alias_sample(e.alias_offset, e.alias_count, u_cell, pmf);
   uint i = cell % tex.width;

@@ -8,7 +8,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE EmitterSample sample_point_emitter(Emitter e, vec3 ref_p) {
+INLINE EmitterSample sample_point_emitter(IN(Emitter) e, vec3 ref_p) {
   EmitterSample s = emitter_sample_failed();
   vec3 v = e.position - ref_p;
   float dist2 = dot(v, v);

@@ -18,7 +18,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE EmitterSample sample_projector_emitter(Emitter e, vec3 ref_p) {
+INLINE EmitterSample sample_projector_emitter(IN(Emitter) e, vec3 ref_p) {
   EmitterSample s = emitter_sample_failed();
   vec3 p = transform_point(e.to_local[0], e.to_local[1], e.to_local[2], ref_p);
   if (!(p.z > 0.0f)) return s;

@@ -22,7 +22,7 @@ TR_NAMESPACE_BEGIN
 // acos(cos theta); atan2(|d.xy|, d.z) is the same angle without acos's loss near the axis,
 // and its portable form keeps the ramp identical on every backend (near the cutoff the ramp
 // magnifies any difference in theta).
-INLINE float spot_falloff(Emitter e, vec3 d) {
+INLINE float spot_falloff(IN(Emitter) e, vec3 d) {
   float cos_theta = d.z / length(d);
   if (!(cos_theta > e.cone.x)) return 0.0f;
   if (cos_theta >= e.cone.y) return 1.0f;
@@ -30,11 +30,11 @@ INLINE float spot_falloff(Emitter e, vec3 d) {
   return (e.cone.z - theta) * e.cone.w;
 }
 
-INLINE vec2 spot_uv(Emitter e, vec3 d) {
+INLINE vec2 spot_uv(IN(Emitter) e, vec3 d) {
   return vec2(0.5f) + 0.5f * vec2(d.x, d.y) / (d.z * e.tan_cutoff);
 }
 
-INLINE EmitterSample sample_spot_emitter(Emitter e, vec3 ref_p) {
+INLINE EmitterSample sample_spot_emitter(IN(Emitter) e, vec3 ref_p) {
   EmitterSample s = emitter_sample_failed();
   vec3 v = e.position - ref_p;
   float dist2 = dot(v, v);

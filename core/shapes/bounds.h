@@ -9,7 +9,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE void analytic_shape_bounds(Shape s, OUT(vec3) lower, OUT(vec3) upper) {
+INLINE void analytic_shape_bounds(IN(Shape) s, OUT(vec3) lower, OUT(vec3) upper) {
   vec3 lo = vec3(-1.0f, -1.0f, s.type == SHAPE_SPHERE ? -1.0f : 0.0f);
   vec3 hi = vec3(1.0f, 1.0f, s.type == SHAPE_DISK ? 0.0f : 1.0f);
   lower = vec3(FLOAT_MAX);

@@ -13,7 +13,7 @@
 TR_NAMESPACE_BEGIN
 
 INLINE bool intersect_shape(uint shape, vec3 o, vec3 d, float tmin, float tmax, OUT(float) t) {
-  Shape s = scene_shape(shape);
+  REF(Shape) s = scene_shape(shape);
   vec3 oo = transform_point(s.to_object[0], s.to_object[1], s.to_object[2], o);
   vec3 od = transform_vector(s.to_object[0], s.to_object[1], s.to_object[2], d);
   if (TR_HAS_SHAPE(SHAPE_SPHERE) && s.type == SHAPE_SPHERE)

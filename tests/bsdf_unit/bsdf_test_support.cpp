@@ -157,15 +157,15 @@ Material rough_plastic(uint flags, float alpha, vec3 diffuse_reflectance, float 
   throw std::logic_error(std::string(what) + " is not available in the BSDF unit tests");
 }
 
-SceneGlobals scene_globals() { not_in_bsdf_tests("scene_globals"); }
-Material scene_material(uint index) { return test::test_scene().materials.at(index); }
-Texture scene_texture(uint index) { return test::test_scene().textures.at(index); }
+const SceneGlobals& scene_globals() { not_in_bsdf_tests("scene_globals"); }
+const Material& scene_material(uint index) { return test::test_scene().materials.at(index); }
+const Texture& scene_texture(uint index) { return test::test_scene().textures.at(index); }
 vec4 scene_texel(uint index) { return test::test_scene().texels.at(index); }
-Emitter scene_emitter(uint) { not_in_bsdf_tests("scene_emitter"); }
+const Emitter& scene_emitter(uint) { not_in_bsdf_tests("scene_emitter"); }
 AliasEntry scene_alias(uint) { not_in_bsdf_tests("scene_alias"); }
-LightNode scene_light_node(uint) { not_in_bsdf_tests("scene_light_node"); }
-Shape scene_shape(uint) { not_in_bsdf_tests("scene_shape"); }
-Instance scene_instance(uint) { not_in_bsdf_tests("scene_instance"); }
+const LightNode& scene_light_node(uint) { not_in_bsdf_tests("scene_light_node"); }
+const Shape& scene_shape(uint) { not_in_bsdf_tests("scene_shape"); }
+const Instance& scene_instance(uint) { not_in_bsdf_tests("scene_instance"); }
 vec3 scene_position(uint) { not_in_bsdf_tests("scene_position"); }
 vec3 scene_normal(uint) { not_in_bsdf_tests("scene_normal"); }
 vec2 scene_uv(uint) { not_in_bsdf_tests("scene_uv"); }

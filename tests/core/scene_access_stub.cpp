@@ -16,15 +16,15 @@ namespace {
 Camera g_camera{};
 }  // namespace
 void bind_film_test_camera(const Camera& c) { g_camera = c; }
-SceneGlobals scene_globals() { unreachable("globals"); }
-Material scene_material(uint) { unreachable("material"); }
-Texture scene_texture(uint) { unreachable("texture"); }
+const SceneGlobals& scene_globals() { unreachable("globals"); }
+const Material& scene_material(uint) { unreachable("material"); }
+const Texture& scene_texture(uint) { unreachable("texture"); }
 vec4 scene_texel(uint) { unreachable("texel"); }
-Emitter scene_emitter(uint) { unreachable("emitter"); }
+const Emitter& scene_emitter(uint) { unreachable("emitter"); }
 AliasEntry scene_alias(uint) { unreachable("alias"); }
-LightNode scene_light_node(uint) { unreachable("light node"); }
-Shape scene_shape(uint) { unreachable("shape"); }
-Instance scene_instance(uint) { unreachable("instance"); }
+const LightNode& scene_light_node(uint) { unreachable("light node"); }
+const Shape& scene_shape(uint) { unreachable("shape"); }
+const Instance& scene_instance(uint) { unreachable("instance"); }
 vec3 scene_position(uint) { unreachable("position"); }
 vec3 scene_normal(uint) { unreachable("normal"); }
 vec2 scene_uv(uint) { unreachable("uv"); }

@@ -14,9 +14,9 @@ namespace tr {
 
 // The scene accessors core/texture.h reads, over one SceneBuffers (the test's own scene).
 static const SceneBuffers* g_buffers = nullptr;
-Texture scene_texture(uint i) { return g_buffers->textures[i]; }
+const Texture& scene_texture(uint i) { return g_buffers->textures[i]; }
 vec4 scene_texel(uint i) { return g_buffers->texels[i]; }
-Shape scene_shape(uint i) { return g_buffers->shapes[i]; }
+const Shape& scene_shape(uint i) { return g_buffers->shapes[i]; }
 uint scene_index(uint i) { return g_buffers->indices[i]; }
 uint scene_attribute(uint i) { return g_buffers->attributes[i]; }
 

@@ -43,15 +43,15 @@ const std::vector<vec4>& local_texels() { return texels; }
 
 }  // namespace bsdf_suite
 
-SceneGlobals scene_globals() { out_of_scope("scene_globals"); }
-Material scene_material(uint index) { return materials.at(index); }
-Texture scene_texture(uint index) { return textures.at(index); }
+const SceneGlobals& scene_globals() { out_of_scope("scene_globals"); }
+const Material& scene_material(uint index) { return materials.at(index); }
+const Texture& scene_texture(uint index) { return textures.at(index); }
 vec4 scene_texel(uint index) { return texels.at(index); }
-Emitter scene_emitter(uint) { out_of_scope("scene_emitter"); }
+const Emitter& scene_emitter(uint) { out_of_scope("scene_emitter"); }
 AliasEntry scene_alias(uint) { out_of_scope("scene_alias"); }
-LightNode scene_light_node(uint) { out_of_scope("scene_light_node"); }
-Shape scene_shape(uint) { out_of_scope("scene_shape"); }
-Instance scene_instance(uint) { out_of_scope("scene_instance"); }
+const LightNode& scene_light_node(uint) { out_of_scope("scene_light_node"); }
+const Shape& scene_shape(uint) { out_of_scope("scene_shape"); }
+const Instance& scene_instance(uint) { out_of_scope("scene_instance"); }
 vec3 scene_position(uint) { out_of_scope("scene_position"); }
 vec3 scene_normal(uint) { out_of_scope("scene_normal"); }
 vec2 scene_uv(uint) { out_of_scope("scene_uv"); }
