@@ -116,7 +116,7 @@ INLINE bool russian_roulette_survives(INOUT(PathState) s, IN(Integrator) it) {
   return throughput_max != 0.0f;
 }
 
-INLINE ShadowRay integrator_step(INOUT(PathState) s, Hit hit) {
+INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   REF(Integrator) it = scene_globals().integrator;
   if (TR_HAS_INTEGRATOR(INTEGRATOR_AMBIENT_OCCLUSION) && it.type == INTEGRATOR_AMBIENT_OCCLUSION)
     return ambient_occlusion_step(s, hit, it);

@@ -50,7 +50,7 @@ INLINE Frame shading_frame(vec3 n, vec3 dp_du) {
   return f;
 }
 
-INLINE SurfaceInteraction surface_interaction(Ray ray, Hit hit) {
+INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
   REF(Shape) shape = scene_shape(hit.shape);
   REF(Instance) inst = scene_instance(hit.instance);
   SurfaceInteraction si;

@@ -22,7 +22,7 @@
 
 TR_NAMESPACE_BEGIN
 
-INLINE ShadowRay ambient_occlusion_step(INOUT(PathState) s, Hit hit, IN(Integrator) it) {
+INLINE ShadowRay ambient_occlusion_step(INOUT(PathState) s, IN(Hit) hit, IN(Integrator) it) {
   s.alive = 0u;
   if (hit.shape == NO_INDEX) return no_shadow_ray();
   SurfaceInteraction si = surface_interaction(s.ray, hit);

@@ -24,7 +24,7 @@ struct AovPoint {
   SurfaceInteraction si;
 };
 
-INLINE AovPoint aov_point(Ray ray, Hit hit) {
+INLINE AovPoint aov_point(IN(Ray) ray, IN(Hit) hit) {
   AovPoint a;
   a.hit = hit;
   if (hit.shape != NO_INDEX) a.si = surface_interaction(ray, hit);
@@ -33,7 +33,7 @@ INLINE AovPoint aov_point(Ray ray, Hit hit) {
 
 // Mitsuba's shape_index: 1 + the position in Scene::shapes() of the shape hit, or of the
 // instance holding it (0 is the background); see Shape.scene_index.
-INLINE float aov_shape_index(Hit hit) {
+INLINE float aov_shape_index(IN(Hit) hit) {
   if (hit.instance != 0u) return float(scene_instance(hit.instance).scene_index + 1u);
   return float(scene_shape(hit.shape).scene_index + 1u);
 }
