@@ -283,7 +283,7 @@ int render_command(int argc, char** argv) {
         [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); },
         [&signals] { return signals.raised(); });
     bar.finish();
-    RenderResult result = film_result(film, *renderer);
+    const RenderResult result = film_result_header(film, *renderer);
     const std::string sampler = sampler_name(scene.buffers.globals.sampler_params.type);
     std::map<std::string, std::string> metadata = {
         {"twinray:scene", a.scene},
@@ -296,7 +296,7 @@ int render_command(int argc, char** argv) {
         {"twinray:estimated_error", std::to_string(outcome.error)}};
     if (!scene.sample_count_note.empty())
       metadata["twinray:sample_count_rounding"] = scene.sample_count_note;
-    write_result(result, paths, metadata, scene.film_half, scene.aov_channels);
+    write_film(film, result, paths, metadata, scene.film_half, scene.aov_channels);
     print_summary(result, paths, outcome, scene.sample_count_note);
     if (a.randomizations > 0 && result.pass_size > 0)
       std::printf("twinray: --randomizations %u: %u independent passes of %u samples (%s)\n",

@@ -30,20 +30,27 @@ class Renderer {
   virtual std::uint32_t seed() const = 0;
 };
 
-// The developed image of `film` as rendered by `renderer`.
-inline RenderResult film_result(const FilmState& film, const Renderer& renderer) {
+// What `film` as rendered by `renderer` is, without its images (mean, variance and the AOVs'
+// left empty).
+inline RenderResult film_result_header(const FilmState& film, const Renderer& renderer) {
   RenderResult r;
   r.width = film.width;
   r.height = film.height;
   r.spp = film.samples;
   r.seed = renderer.seed();
   r.pass_size = film.pass_size;
-  develop_film(film, r.mean, r.variance);
   r.aov_count = film.aov_count;
-  develop_aovs(film, r.aov_mean, r.aov_variance);
   r.stats = film.stats;
   r.backend = renderer.backend();
   r.device = renderer.device();
+  return r;
+}
+
+// The developed image of `film` as rendered by `renderer`.
+inline RenderResult film_result(const FilmState& film, const Renderer& renderer) {
+  RenderResult r = film_result_header(film, renderer);
+  develop_film(film, r.mean, r.variance);
+  develop_aovs(film, r.aov_mean, r.aov_variance);
   return r;
 }
 

@@ -1,5 +1,6 @@
 #include "render/write_result.h"
 
+#include <functional>
 #include <utility>
 
 #include "io/image.h"
@@ -8,35 +9,78 @@
 namespace tr {
 namespace {
 
-Image to_image(const RenderResult& r, const std::vector<double>& values) {
+// Value v (0: mean, 1: variance) of accumulator i, three doubles, into out.
+using Develop = std::function<void(std::size_t i, int v, double out[3])>;
+
+// R, G, B, then each AOV's channels, taken from its three values per pixel, as floats.
+Image developed_image(const RenderResult& r, int v, const Develop& pixel, const Develop& aov,
+                      const std::vector<std::vector<std::string>>& aov_channels) {
   Image img;
   img.width = int(r.width);
   img.height = int(r.height);
   img.channels = 3;
-  img.pixels.assign(values.begin(), values.end());
+  if (!aov_channels.empty()) {
+    img.channel_names = {"R", "G", "B"};
+    for (const std::vector<std::string>& names : aov_channels)
+      img.channel_names.insert(img.channel_names.end(), names.begin(), names.end());
+    img.channels = int(img.channel_names.size());
+  }
+  const size_t pixels = size_t(r.width) * r.height;
+  img.pixels.reserve(pixels * img.channels);
+  double value[3];
+  for (size_t p = 0; p < pixels; ++p) {
+    pixel(p, v, value);
+    for (int c = 0; c < 3; ++c) img.pixels.push_back(float(value[c]));
+    for (size_t a = 0; a < aov_channels.size(); ++a) {
+      aov(p * r.aov_count + a, v, value);
+      for (size_t c = 0; c < aov_channels[a].size(); ++c) img.pixels.push_back(float(value[c]));
+    }
+  }
   return img;
 }
 
-// R, G, B, then each AOV's channels, taken from its three values per pixel.
-Image with_aovs(const RenderResult& r, const std::vector<double>& rgb,
-                const std::vector<double>& aovs,
-                const std::vector<std::vector<std::string>>& aov_channels) {
-  Image img = to_image(r, rgb);
-  if (aov_channels.empty()) return img;
-  img.channel_names = {"R", "G", "B"};
-  for (const std::vector<std::string>& names : aov_channels)
-    img.channel_names.insert(img.channel_names.end(), names.begin(), names.end());
-  img.channels = int(img.channel_names.size());
-  const size_t pixels = size_t(r.width) * r.height;
-  img.pixels.clear();
-  img.pixels.reserve(pixels * img.channels);
-  for (size_t p = 0; p < pixels; ++p) {
-    for (int c = 0; c < 3; ++c) img.pixels.push_back(float(rgb[3 * p + c]));
-    for (size_t a = 0; a < aov_channels.size(); ++a)
-      for (size_t c = 0; c < aov_channels[a].size(); ++c)
-        img.pixels.push_back(float(aovs[3 * (p * r.aov_count + a) + c]));
+// One image at a time, each freed before the next is built: with the film or result it is
+// made from, the peak memory of a render (BENCHMARKS.md, "Memory").
+void write_developed(const RenderResult& result, const Develop& pixel, const Develop& aov,
+                     const OutputPaths& paths, const std::map<std::string, std::string>& extra,
+                     bool half, const std::vector<std::vector<std::string>>& aov_channels) {
+  std::map<std::string, std::string> meta = extra;
+  meta["twinray:spp"] = std::to_string(result.spp);
+  meta["twinray:seed"] = std::to_string(result.seed);
+  meta["twinray:backend"] = result.backend;
+  meta["twinray:device"] = result.device;
+  meta["twinray:seconds"] = std::to_string(result.stats.seconds);
+  meta["twinray:rejected_nonfinite"] = std::to_string(result.stats.rejected_nonfinite);
+  meta["twinray:variance_estimate"] = variance_estimate_name(result.pass_size, result.spp);
+  {
+    Image mean = developed_image(result, 0, pixel, aov, aov_channels);
+    mean.metadata = meta;
+    write_exr(paths.image, mean, half);
   }
-  return img;
+  {
+    Image var = developed_image(result, 1, pixel, aov, aov_channels);
+    var.metadata = std::move(meta);
+    var.metadata["twinray:content"] =
+        "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
+        "(twinray:variance_estimate says from what)";
+    write_exr(paths.variance, var, half);
+  }
+  write_png_srgb(paths.preview, developed_image(result, 0, pixel, aov, {}));
+}
+
+Develop from_vectors(const std::vector<double>& mean, const std::vector<double>& variance) {
+  return [&mean, &variance](std::size_t i, int v, double out[3]) {
+    const std::vector<double>& values = v == 0 ? mean : variance;
+    for (int c = 0; c < 3; ++c) out[c] = values[3 * i + c];
+  };
+}
+
+Develop from_film(const FilmMomentArray& moments, std::uint32_t pass_size) {
+  return [&moments, pass_size](std::size_t i, int v, double out[3]) {
+    double mean[3], variance[3];
+    develop_estimate(moments[i], pass_size, mean, variance);
+    for (int c = 0; c < 3; ++c) out[c] = v == 0 ? mean[c] : variance[c];
+  };
 }
 
 }  // namespace
@@ -52,31 +96,16 @@ OutputPaths output_paths(const std::string& exr_path) {
 void write_result(const RenderResult& result, const OutputPaths& paths,
                   const std::map<std::string, std::string>& extra, bool half,
                   const std::vector<std::vector<std::string>>& aov_channels) {
-  std::map<std::string, std::string> meta = extra;
-  meta["twinray:spp"] = std::to_string(result.spp);
-  meta["twinray:seed"] = std::to_string(result.seed);
-  meta["twinray:backend"] = result.backend;
-  meta["twinray:device"] = result.device;
-  meta["twinray:seconds"] = std::to_string(result.stats.seconds);
-  meta["twinray:rejected_nonfinite"] = std::to_string(result.stats.rejected_nonfinite);
-  meta["twinray:variance_estimate"] = variance_estimate_name(result.pass_size, result.spp);
+  write_developed(result, from_vectors(result.mean, result.variance),
+                  from_vectors(result.aov_mean, result.aov_variance), paths, extra, half,
+                  aov_channels);
+}
 
-  // One image at a time, each freed before the next is built: the peak memory of a render is
-  // here, beside its film and result.
-  {
-    Image mean = with_aovs(result, result.mean, result.aov_mean, aov_channels);
-    mean.metadata = meta;
-    write_exr(paths.image, mean, half);
-  }
-  {
-    Image var = with_aovs(result, result.variance, result.aov_variance, aov_channels);
-    var.metadata = std::move(meta);
-    var.metadata["twinray:content"] =
-        "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
-        "(twinray:variance_estimate says from what)";
-    write_exr(paths.variance, var, half);
-  }
-  write_png_srgb(paths.preview, to_image(result, result.mean));
+void write_film(const FilmState& film, const RenderResult& header, const OutputPaths& paths,
+                const std::map<std::string, std::string>& extra, bool half,
+                const std::vector<std::vector<std::string>>& aov_channels) {
+  write_developed(header, from_film(film.pixels, film.pass_size),
+                  from_film(film.aovs, film.pass_size), paths, extra, half, aov_channels);
 }
 
 }  // namespace tr

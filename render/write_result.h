@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "render/film_state.h"
 #include "render/render.h"
 
 namespace tr {
@@ -29,5 +30,12 @@ OutputPaths output_paths(const std::string& exr_path);
 void write_result(const RenderResult& result, const OutputPaths& paths,
                   const std::map<std::string, std::string>& extra, bool half,
                   const std::vector<std::vector<std::string>>& aov_channels = {});
+
+// The same files developed from `film` one image at a time, without a RenderResult's images in
+// double: `header` is film_result_header's (render/renderer.h). The values written are
+// write_result's of film_result(film), bit for bit.
+void write_film(const FilmState& film, const RenderResult& header, const OutputPaths& paths,
+                const std::map<std::string, std::string>& extra, bool half,
+                const std::vector<std::vector<std::string>>& aov_channels = {});
 
 }  // namespace tr

@@ -1,10 +1,6 @@
 #include "scenes/gltf/gltf_import.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include <algorithm>
-#include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,6 +13,8 @@
 #include <sstream>
 #include <tuple>
 
+#include "scenes/assimp/assimp_loader.h"
+#include "scenes/assimp/imported_ply.h"
 #include "scenes/bitmap.h"
 #include "scenes/json_node_builder.h"
 
@@ -250,11 +248,11 @@ class Importer : JsonNodeBuilder {
   void load_geometry() {
     // Assimp's glTF 2.0 importer makes one aiMesh per primitive, meshes in order and their
     // primitives in order (glTF2Importer::ImportMeshes), strips and fans as triangles.
-    const aiScene* scene =
-        importer_.ReadFile(path_, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
-    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-      fail(Location{path_, 0}, "Assimp cannot read the file: ", importer_.GetErrorString());
-    ai_ = scene;
+    try {
+      meshes_ = read_geometry_with_assimp(path_);
+    } catch (const std::runtime_error& e) {
+      fail(Location{path_, 0}, "Assimp cannot read the file: ", e.what());
+    }
     const json& meshes = list("meshes");
     unsigned offset = 0;
     for (size_t m = 0; m < meshes.size(); ++m) {
@@ -264,40 +262,24 @@ class Importer : JsonNodeBuilder {
       mesh_offsets_.push_back(offset);
       offset += unsigned(array(*prims, p + "/primitives").size());
     }
-    if (offset != ai_->mNumMeshes)
-      fail(Location{path_, 0}, "Assimp read ", ai_->mNumMeshes, " primitives where the file has ",
+    if (offset != meshes_.size())
+      fail(Location{path_, 0}, "Assimp read ", meshes_.size(), " primitives where the file has ",
            offset);
   }
 
-  // The PLY file of Assimp mesh `i` (written once): float x y z, nx ny nz when the primitive
-  // has NORMAL, u v when it has TEXCOORD_0, faces as `list uchar int vertex_indices` (the form of
-  // Mitsuba's ply plugin, scenes/mesh.cpp).
+  // The PLY file of Assimp mesh `i` (written once; scenes/assimp/imported_ply.h).
   std::string ply_file(unsigned i) {
     auto it = plys_.find(i);
     if (it != plys_.end()) return it->second;
-    const aiMesh& m = *ai_->mMeshes[i];
     fs::path file = work_ / ("gltf_mesh_" + std::to_string(i) + ".ply");
-    std::ofstream f(file, std::ios::binary);
-    bool normals = m.HasNormals(), uv = m.HasTextureCoords(0);
-    f << "ply\nformat binary_little_endian 1.0\ncomment written by twinray from a glTF primitive\n"
-      << "element vertex " << m.mNumVertices
-      << "\nproperty float x\nproperty float y\nproperty float z\n"
-      << (normals ? "property float nx\nproperty float ny\nproperty float nz\n" : "")
-      << (uv ? "property float u\nproperty float v\n" : "") << "element face " << m.mNumFaces
-      << "\nproperty list uchar int vertex_indices\nend_header\n";
-    auto put = [&](auto value) { f.write(reinterpret_cast<const char*>(&value), sizeof value); };
-    for (unsigned k = 0; k < m.mNumVertices; ++k) {
-      put(m.mVertices[k].x), put(m.mVertices[k].y), put(m.mVertices[k].z);
-      if (normals) put(m.mNormals[k].x), put(m.mNormals[k].y), put(m.mNormals[k].z);
-      // Assimp stores glTF's v as 1 - v (glTF2Importer flips it to its bottom-left origin);
-      // undone here: glTF's uv origin is the image's top-left (spec "Images"), as Mitsuba's.
-      if (uv) put(m.mTextureCoords[0][k].x), put(1.0f - m.mTextureCoords[0][k].y);
+    // Assimp stores glTF's v as 1 - v (glTF2Importer flips it to its bottom-left origin);
+    // undone here: glTF's uv origin is the image's top-left (spec "Images"), as Mitsuba's.
+    try {
+      write_imported_ply(meshes_[i], file, "written by twinray from a glTF primitive",
+                         TextureV::Flipped);
+    } catch (const std::runtime_error& e) {
+      fail(Location{path_, 0}, e.what());
     }
-    for (unsigned k = 0; k < m.mNumFaces; ++k) {
-      put(uint8_t(3));
-      for (int c = 0; c < 3; ++c) put(int32_t(m.mFaces[k].mIndices[c]));
-    }
-    if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
     return plys_[i] = file.string();
   }
 
@@ -421,17 +403,16 @@ class Importer : JsonNodeBuilder {
           warn(ap, "attribute not supported by twinray, ignored");
       }
       unsigned ai = mesh_offsets_[m] + unsigned(k);
-      const aiMesh& am = *ai_->mMeshes[ai];
-      if (am.mPrimitiveTypes & (aiPrimitiveType_POINT | aiPrimitiveType_LINE))
-        bad(pp, "Assimp read points or lines from a triangle primitive");
-      if (am.mNumFaces == 0) {
+      const ImportedMesh& am = meshes_[ai];
+      if (am.points_or_lines) bad(pp, "Assimp read points or lines from a triangle primitive");
+      if (am.triangles.empty()) {
         warn(pp, "no triangles, ignored");
         continue;
       }
       NodePtr s = make("shape", "ply", pp);
       add(*s, "filename", PropertyKind::String, pp).text = ply_file(ai);
       // Spec "Meshes": without NORMAL, flat normals.
-      if (!am.HasNormals()) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
+      if (am.normals.empty()) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
       add_transform(*s, world, node_pointer);
       long long material = -1;
       if (const json* mi = member(prim, "material"))
@@ -961,8 +942,7 @@ class Importer : JsonNodeBuilder {
   std::string glb_bin_;
   bool have_glb_bin_ = false;
   json doc_;
-  Assimp::Importer importer_;
-  const aiScene* ai_ = nullptr;
+  ImportedGeometry meshes_;
   std::vector<unsigned> mesh_offsets_;
   std::map<unsigned, std::string> plys_;
   std::map<std::pair<size_t, bool>, Image> images_;
