@@ -47,7 +47,8 @@ INLINE float emitter_pmf(IN(SceneGlobals) g, vec3 ref_p, uint index) {
   if (g.infinite_probability > 0.0f)
     pmf += g.infinite_probability * alias_pmf(g.infinite_alias_offset, index);
   if (g.infinite_probability < 1.0f)
-    pmf += (1.0f - g.infinite_probability) * light_bvh_pmf(g.light_root, ref_p, index);
+    pmf += (1.0f - g.infinite_probability) *
+           light_bvh_pmf(g.light_root, ref_p, scene_emitter(index).light_leaf);
   return pmf;
 }
 

@@ -52,13 +52,12 @@ INLINE float light_child_probability(float importance0, float importance1, bool 
   return (first ? importance0 : importance1) / total;
 }
 
-// Descends from the root with u in [0, 1), rescaled at each choice. Returns the leaf, i.e. the
-// emitter index, and its probability in pmf (0 and NO_INDEX when no emitter can light p).
+// Descends from the root with u in [0, 1), rescaled at each choice. Returns the emitter of the
+// leaf reached and its probability in pmf (0 and NO_INDEX when no emitter can light p).
 INLINE uint light_bvh_sample(uint root, vec3 p, float u, OUT(float) pmf) {
   pmf = 0.0f;
   if (root == NO_INDEX) return NO_INDEX;
-  uint node = root;
-  LightNode n = scene_light_node(node);
+  LightNode n = scene_light_node(root);
   if (!(light_node_importance(n, p) > 0.0f)) return NO_INDEX;
   float prob = 1.0f;
   while (n.child0 != NO_INDEX) {
@@ -70,27 +69,25 @@ INLINE uint light_bvh_sample(uint root, vec3 p, float u, OUT(float) pmf) {
     float p1 = light_child_probability(i0, i1, false);
     if (!(p0 + p1 > 0.0f)) return NO_INDEX;
     if (u < p0) {
-      node = n.child0;
       n = c0;
       u = min(u / p0, ONE_MINUS_EPSILON);
       prob *= p0;
     } else {
-      node = n.child1;
       n = c1;
       u = min((u - p0) / p1, ONE_MINUS_EPSILON);
       prob *= p1;
     }
   }
   pmf = prob;
-  return node;
+  return n.child1;
 }
 
-// The probability with which light_bvh_sample returns `emitter` from p.
-INLINE float light_bvh_pmf(uint root, vec3 p, uint emitter) {
-  if (root == NO_INDEX) return 0.0f;
-  uint node = emitter;
+// The probability with which light_bvh_sample returns the emitter of leaf `leaf`
+// (Emitter.light_leaf) from p.
+INLINE float light_bvh_pmf(uint root, vec3 p, uint leaf) {
+  if (root == NO_INDEX || leaf == NO_INDEX) return 0.0f;
+  uint node = leaf;
   LightNode n = scene_light_node(node);
-  if (node != root && n.parent == NO_INDEX) return 0.0f;
   float prob = 1.0f;
   while (node != root) {
     REF(LightNode) parent = scene_light_node(n.parent);

@@ -151,6 +151,11 @@ struct Emitter {
   vec4 to_local[3];  // envmap, spot, projector: world->local
   vec4 cone;         // spot: cos(cutoff), cos(beam_width), cutoff, 1 / (cutoff - beam_width);
                      // projector: uv scales cot(fov_x / 2) / 2 and aspect cot(fov_x / 2) / 2
+  uint light_leaf;   // EMITTER_SELECTION_BVH: its leaf in light_nodes, NO_INDEX outside the tree
+                     // (scenes/emitter_selection.cpp); read with no other selection
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // Walker/Vose alias table entry (Vose 1991): pick bin i = floor(u * n); keep it with
@@ -174,8 +179,10 @@ const uint EMITTER_SELECTION_BVH = 2u;
 // A node of the light BVH (core/light_bvh.h): a sphere holding the emitters below it (around
 // their bounding box), their summed power phi, and a cone around w holding every direction of
 // their surface normals (or their emission axis) with half-angle theta_o; emission reaches at
-// most theta_e beyond that cone. Node i < emitter count is emitter i's leaf (unused for emitters
-// outside the tree: parent NO_INDEX, not the root); interior nodes follow.
+// most theta_e beyond that cone. The nodes are in depth-first order, the root first and each
+// interior node's child0 right after it, so that the leaves of a subtree, and the nodes a descent
+// visits near them, lie together in memory (emitters listed in scene order would scatter them).
+// A leaf has child0 NO_INDEX and its emitter in child1; Emitter.light_leaf leads back to it.
 struct LightNode {
   vec3 centre;
   float radius;
@@ -184,7 +191,7 @@ struct LightNode {
   float cos_theta_o;
   float sin_theta_o;
   float cos_theta_e;
-  uint child0;  // interior: the two children; leaves: NO_INDEX
+  uint child0;  // interior: the two children; leaves: NO_INDEX, then the emitter
   uint child1;
   uint parent;  // NO_INDEX at the root and for emitters outside the tree
   uint pad0;

@@ -82,7 +82,9 @@ void use_emitter_selection(SceneBuffers& b, uint selection) {
     }
   }
   g.infinite_alias_offset = append_table(b, infinite);
-  g.light_root = build_light_bvh(bounds, power, members, b.light_nodes);
+  std::vector<uint> leaves;
+  g.light_root = build_light_bvh(bounds, power, members, b.light_nodes, leaves);
+  for (uint i = 0; i < n; ++i) b.emitters[i].light_leaf = leaves[i];
   // pbrt-v4's BVHLightSampler: the tree counts as one more infinite light.
   const uint choices = infinite_count + (g.light_root != NO_INDEX ? 1u : 0u);
   g.infinite_probability = choices == 0 ? 0.0f : float(infinite_count) / float(choices);

@@ -90,11 +90,21 @@ struct Builder {
   const std::vector<LightBounds>& bounds;
   const std::vector<double>& phi;
   std::vector<LightNode>& nodes;
+  std::vector<uint>& leaves;
 
   glm::dvec3 centre(uint i) const { return 0.5 * (bounds[i].lo + bounds[i].hi); }
 
+  // Appends the subtree over [begin, end) in depth-first order and returns its root.
   uint build(std::vector<uint>::iterator begin, std::vector<uint>::iterator end) {
-    if (end - begin == 1) return *begin;
+    const uint index = uint(nodes.size());
+    if (end - begin == 1) {
+      Bounds leaf;
+      leaf.add(bounds[*begin], phi[*begin]);
+      nodes.push_back(to_node(leaf));
+      nodes[index].child1 = *begin;
+      leaves[*begin] = index;
+      return index;
+    }
     Bounds node;
     glm::dvec3 c_lo(INFINITY), c_hi(-INFINITY);
     for (auto it = begin; it != end; ++it) {
@@ -129,13 +139,11 @@ struct Builder {
           begin, end, [&](uint i) { return bucket_of(i, best_axis, lo, extent) <= best_split; });
       if (part != begin && part != end) mid = part;
     }
+    nodes.push_back(to_node(node));
     const uint c0 = build(begin, mid);
     const uint c1 = build(mid, end);
-    const uint index = uint(nodes.size());
-    LightNode n = to_node(node);
-    n.child0 = c0;
-    n.child1 = c1;
-    nodes.push_back(n);
+    nodes[index].child0 = c0;
+    nodes[index].child1 = c1;
     nodes[c0].parent = nodes[c1].parent = index;
     return index;
   }
@@ -149,15 +157,12 @@ struct Builder {
 }  // namespace
 
 uint build_light_bvh(const std::vector<LightBounds>& bounds, const std::vector<double>& phi,
-                     std::vector<uint> members, std::vector<LightNode>& nodes) {
-  nodes.assign(bounds.size(), LightNode{});
-  for (size_t i = 0; i < bounds.size(); ++i) {
-    Bounds leaf;
-    leaf.add(bounds[i], phi[i]);
-    nodes[i] = to_node(leaf);
-  }
+                     std::vector<uint> members, std::vector<LightNode>& nodes,
+                     std::vector<uint>& leaves) {
+  nodes.clear();
+  leaves.assign(bounds.size(), NO_INDEX);
   if (members.empty()) return NO_INDEX;
-  Builder builder{bounds, phi, nodes};
+  Builder builder{bounds, phi, nodes, leaves};
   return builder.build(members.begin(), members.end());
 }
 

@@ -9,10 +9,12 @@
 
 namespace tr {
 
-// Fills `nodes` (one leaf per entry of `bounds`, then the interior nodes) over the emitters
-// listed in `members` (their power taken from `phi`) and returns the root, or NO_INDEX when
-// `members` is empty.
+// Fills `nodes` with the tree over the emitters listed in `members` (entries of `bounds`, their
+// power taken from `phi`), in depth-first order (core/scene_types.h LightNode), and `leaves`
+// with each entry's leaf (NO_INDEX for those not in `members`); returns the root (0), or
+// NO_INDEX when `members` is empty.
 uint build_light_bvh(const std::vector<LightBounds>& bounds, const std::vector<double>& phi,
-                     std::vector<uint> members, std::vector<LightNode>& nodes);
+                     std::vector<uint> members, std::vector<LightNode>& nodes,
+                     std::vector<uint>& leaves);
 
 }  // namespace tr
