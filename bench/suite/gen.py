@@ -4,9 +4,13 @@
   gen.py mesh OUT [--triangles N]   OUT/mesh_N.xml + OUT/mesh_N.ply: a displaced sphere of about
                                     N triangles (binary little-endian PLY) in a box with one
                                     rectangular area light
-  gen.py emitters OUT [--count N]   OUT/emitters_N.xml + OUT/emitters_N/*.ply: N small emissive
+  gen.py emitters OUT [--count N] [--triangles T]
+                                    OUT/emitters_N.xml + OUT/emitters_N/*.ply: N small emissive
                                     triangles (one PLY shape, hence one area emitter, each) of
-                                    log-uniformly distributed power over a diffuse plane
+                                    log-uniformly distributed power over a diffuse plane; with
+                                    T (>= N): OUT/emitters_N_of_T.xml, T triangles whose places
+                                    do not depend on N, the first N of them emissive, the rest
+                                    black (the same geometry for every N)
   gen.py envmap OUT [--width W]     OUT/envmap.xml + OUT/envmap_sky.pfm: spheres on a plane lit
                                     only by an `envmap` (a procedural sky with a sun, W x W/2 PFM)
   gen.py count SCENE.xml            prints "TRIANGLES ANALYTIC_SHAPES EMITTERS" (count_scene)
@@ -176,9 +180,11 @@ def gen_mesh(out, triangles):
     return path
 
 
-def gen_emitters(out, count):
+def gen_emitters(out, count, triangles=None):
     rng = random.Random(15)
-    name = f"emitters_{count}"
+    fixed = triangles is not None
+    total_shapes = triangles if fixed else count
+    name = f"emitters_{count}_of_{triangles}" if fixed else f"emitters_{count}"
     folder = os.path.join(out, name)
     os.makedirs(folder, exist_ok=True)
     # Powers log-uniform over four decades, scaled so that all emitters together emit the same
@@ -186,24 +192,32 @@ def gen_emitters(out, count):
     # radiance L and area A emits pi L A.
     # Beyond 1000 triangles they shrink so that together they cover the same area (about a
     # quarter of the plane's, seen from above): more emitters, not a ceiling of them.
-    side = 0.3 * min(1.0, math.sqrt(1000.0 / count))
+    side = 0.3 * min(1.0, math.sqrt(1000.0 / total_shapes))
     area = 0.5 * side * side
     powers = [10.0 ** rng.uniform(0.0, 4.0) for _ in range(count)]
     total = sum(powers)
+    # With a fixed geometry the places come from their own generator, so that they do not
+    # depend on the count of emitters.
+    place_rng = random.Random(16) if fixed else rng
     shapes = []
-    for i, p in enumerate(powers):
-        x, y, z = rng.uniform(-7, 7), rng.uniform(0.4, 2.5), rng.uniform(-7, 7)
-        a = rng.uniform(0, 2 * math.pi)
+    for i in range(total_shapes):
+        x, y, z = (place_rng.uniform(-7, 7), place_rng.uniform(0.4, 2.5),
+                   place_rng.uniform(-7, 7))
+        a = place_rng.uniform(0, 2 * math.pi)
         ca, sa = math.cos(a), math.sin(a)
         # a, a + side * e1, a + side * e2 with e1 = (cos, 0, sin), e2 = (-sin, 0, cos): the
         # normal e1 x e2 = (0, -1, 0) faces the plane.
         pos = array("f", (x, y, z, x + side * ca, y, z + side * sa, x - side * sa, y, z + side * ca))
         write_ply(os.path.join(folder, f"{i}.ply"), pos, array("i", (0, 1, 2)))
-        radiance = 300.0 * p / total / (math.pi * area)
-        shapes.append(f'    <shape type="ply"><string name="filename" value="{name}/{i}.ply"/>'
-                      f'<ref id="black"/><emitter type="area"><rgb name="radiance" '
-                      f'value="{radiance:.6g}"/></emitter></shape>\n')
-    xml = f"""<!-- bench/suite: {count} emissive triangles (each its own PLY shape, so its own area
+        shape = f'    <shape type="ply"><string name="filename" value="{name}/{i}.ply"/><ref id="black"/>'
+        if i < count:
+            radiance = 300.0 * powers[i] / total / (math.pi * area)
+            shape += (f'<emitter type="area"><rgb name="radiance" value="{radiance:.6g}"/>'
+                      f'</emitter>')
+        shapes.append(shape + "</shape>\n")
+    what = (f"{triangles} small triangles, the first {count} of them emissive" if fixed else
+            f"{count} emissive triangles")
+    xml = f"""<!-- bench/suite: {what} (each its own PLY shape, so its own area
      emitter; Mitsuba's uniform emitter selection) of log-uniform power over four decades, 300 W
      in all, 0.4 to 2.5 above a 20 x 20 diffuse plane, facing it. -->
 <scene version="3.0.0">
@@ -352,6 +366,7 @@ def main():
     e = sub.add_parser("emitters")
     e.add_argument("out")
     e.add_argument("--count", type=int, default=100)
+    e.add_argument("--triangles", type=int)
     v = sub.add_parser("envmap")
     v.add_argument("out")
     v.add_argument("--width", type=int, default=512)
@@ -365,13 +380,15 @@ def main():
         p.error("--triangles must be at least 8")
     if a.cmd == "emitters" and a.count < 1:
         p.error("--count must be at least 1")
+    if a.cmd == "emitters" and a.triangles is not None and a.triangles < a.count:
+        p.error("--triangles must be at least --count")
     if a.cmd == "envmap" and a.width < 4:
         p.error("--width must be at least 4")
     os.makedirs(a.out, exist_ok=True)
     if a.cmd == "mesh":
         print(gen_mesh(a.out, a.triangles))
     elif a.cmd == "emitters":
-        print(gen_emitters(a.out, a.count))
+        print(gen_emitters(a.out, a.count, a.triangles))
     else:
         print(gen_envmap(a.out, a.width))
 

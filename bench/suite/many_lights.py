@@ -10,10 +10,13 @@ usage: bench/suite/many_lights.py [--full] [--write] OUT_DIR
            bench/plots/many_lights.svg
 env: TWINRAY (build/app/twinray), THREADS (2)
 
-Two measurements, both at 128x128, max_depth 4, on the CPU backend:
+Three measurements, all at 128x128, max_depth 4, on the CPU backend:
 - cost: the render phase's marginal time per sample (twinray's own summary, whose time counts the
   Embree build and the sampling, not scene loading): the difference between renders of 80 and 16
-  spp over their 64 spp of difference, for each N and selection;
+  spp over their 64 spp of difference (median of three), for each N and selection;
+- the same cost with the geometry held fixed (gen.py emitters --triangles T: T triangles, the
+  first N emissive, T = 1e4, or 1e5 with --full), so that it measures what N emitters cost and
+  not what T shapes cost to trace and shade;
 - error at equal time: for N = 1e3 and 1e4 (and 1e5 with --full), each selection renders for the
   same time (--time 4) with several seeds; relMSE against a reference (the light BVH at 4096
   spp) as `twinray compare` computes it; mean and standard error over the seeds.
@@ -33,6 +36,7 @@ SELECTIONS = ["uniform", "power", "bvh"]
 RES = ["-D", "width=128", "-D", "height=128"]
 EQUAL_TIME_S = 4.0
 REFERENCE_SPP = 4096
+COST_REPEATS = 3
 SUMMARY = re.compile(r"^twinray: \d+x\d+, (\d+) spp, ([0-9.]+) s, ([0-9.]+) Msamples/s", re.M)
 
 
@@ -50,6 +54,26 @@ def render(scene, out, selection, extra):
     if not m:
         sys.exit(f"many_lights: no summary line from {scene}:\n{log}")
     return int(m.group(1)), float(m.group(2))
+
+
+def generate(out, args):
+    return run([sys.executable, os.path.join(HERE, "gen.py"), "emitters", out] + args).strip()
+
+
+def marginal_cost(scene, out, label, n, selection):
+    """µs per sample: the render phase includes the Embree build, which grows with the shapes,
+    so the marginal cost of a sample is the difference of two renders over their samples'
+    difference; the median of COST_REPEATS such differences (one alone varies by about ±0.1 µs
+    on the shared 2-core machines)."""
+    exr = os.path.join(out, f"{label}_{n}_{selection}.exr")
+    runs = []
+    for _ in range(COST_REPEATS):
+        spp0, t0 = render(scene, exr, selection, ["-D", "spp=16"])
+        spp1, t1 = render(scene, exr, selection, ["-D", "spp=80"])
+        runs.append((t1 - t0) / (128 * 128 * (spp1 - spp0)) * 1e6)
+    us = sorted(runs)[COST_REPEATS // 2]
+    print(f"{label} N={n} {selection}: {us:.3f} µs/sample", file=sys.stderr)
+    return us
 
 
 def rel_mse(test, reference):
@@ -146,22 +170,16 @@ def main():
     seeds = range(8 if full else 4)
     uptime_before = run(["uptime"]).strip()
 
-    scenes = {}
+    scenes, fixed_scenes = {}, {}
+    triangles = max(counts)
     for n in counts:
-        scenes[n] = run([sys.executable, os.path.join(HERE, "gen.py"), "emitters", out,
-                         "--count", str(n)]).strip()
+        scenes[n] = generate(out, ["--count", str(n)])
+        fixed_scenes[n] = generate(out, ["--count", str(n), "--triangles", str(triangles)])
 
-    cost = {}
-    for n in counts:
-        for s in SELECTIONS:
-            # The render phase includes the Embree build, which grows with N: the marginal
-            # cost of a sample is the difference of two renders over their samples' difference.
-            spp0, t0 = render(scenes[n], os.path.join(out, f"cost_{n}_{s}.exr"), s,
-                              ["-D", "spp=16"])
-            spp1, t1 = render(scenes[n], os.path.join(out, f"cost_{n}_{s}.exr"), s,
-                              ["-D", "spp=80"])
-            cost[(n, s)] = (t1 - t0) / (128 * 128 * (spp1 - spp0)) * 1e6
-            print(f"N={n} {s}: {cost[(n, s)]:.3f} µs/sample", file=sys.stderr)
+    cost = {n_s: marginal_cost(scenes[n_s[0]], out, "cost", *n_s)
+            for n_s in ((n, s) for n in counts for s in SELECTIONS)}
+    fixed_cost = {n_s: marginal_cost(fixed_scenes[n_s[0]], out, "fixed_cost", *n_s)
+                  for n_s in ((n, s) for n in counts for s in SELECTIONS)}
 
     error = {}
     for n in error_counts:
@@ -191,6 +209,15 @@ def main():
             row.append(f"{error[(n, 'uniform')][0] / error[(n, 'bvh')][0]:.1f}")
         else:
             row += ["–"] * (len(SELECTIONS) + 1)
+        lines.append("| " + " | ".join(row) + " |")
+    lines += ["", f"The same cost with the geometry held fixed: {triangles} triangles, the "
+              f"first N of them emissive.", "",
+              "| emitters | " + " | ".join(f"{s} µs/sample" for s in SELECTIONS) +
+              " | bvh cost ÷ its cost at 1 emitter |",
+              "|---" * (len(SELECTIONS) + 2) + "|"]
+    for n in counts:
+        row = [f"{n} of {triangles}"] + [f"{fixed_cost[(n, s)]:.3f}" for s in SELECTIONS]
+        row.append(f"{fixed_cost[(n, 'bvh')] / fixed_cost[(1, 'bvh')]:.2f}")
         lines.append("| " + " | ".join(row) + " |")
     table = "\n".join(lines)
     print(table)

@@ -21,4 +21,6 @@ check() {  # check SCENE TRIANGLES ANALYTIC EMITTERS
 check "$(python3 "$here/gen.py" mesh "$work" --triangles 1000)" $((1024 + 12)) 0 1
 # 10 triangles, one area emitter each, over a rectangle.
 check "$(python3 "$here/gen.py" emitters "$work" --count 10)" 12 0 10
+# The fixed geometry: 5 triangles, 2 of them emissive.
+check "$(python3 "$here/gen.py" emitters "$work" --count 2 --triangles 5)" 7 0 2
 check "$(python3 "$here/gen.py" envmap "$work" --width 16)" 2 4 1
