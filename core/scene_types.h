@@ -193,7 +193,7 @@ struct LightNode {
   float cos_theta_e;
   uint child0;  // interior: the two children; leaves: NO_INDEX, then the emitter
   uint child1;
-  uint parent;  // NO_INDEX at the root and for emitters outside the tree
+  uint parent;  // NO_INDEX at the root
   uint pad0;
   uint pad1;
 };
