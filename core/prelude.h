@@ -15,7 +15,15 @@
 
 #define TR_NAMESPACE_BEGIN namespace tr {
 #define TR_NAMESPACE_END }
+// A translation unit that compiles the core with feature guards of its own (below), beside
+// units that compile it with others, defines TR_FEATURE_VARIANT: its core functions then have
+// internal linkage, so that each unit keeps its own instead of the linker merging the
+// differently specialized bodies of one name.
+#ifdef TR_FEATURE_VARIANT
+#define INLINE static inline
+#else
 #define INLINE inline
+#endif
 #define OUT(T) T&
 #define INOUT(T) T&
 // A read-only parameter (IN) or local/returned view (REF) of a scene record: a reference on the

@@ -10,7 +10,7 @@
 #include "gpu_backend/gpu_error.h"
 #include "gpu_backend/gpu_scene.h"
 #include "gpu_backend/rt_pipeline.h"
-#include "gpu_backend/scene_features.h"
+#include "scenes/scene_features.h"
 #include "gpu_backend/variance_merge.h"
 #include "gpu_backend/vk_device.h"
 #include "gpu_backend/vk_instance.h"

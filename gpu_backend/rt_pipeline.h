@@ -9,7 +9,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "gpu_backend/scene_features.h"
+#include "scenes/scene_features.h"
 #include "gpu_backend/vk_device.h"
 
 namespace tr {

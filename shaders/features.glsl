@@ -3,7 +3,7 @@
 // scene uses type t (BSDF_*, EMITTER_*, SHAPE_*, TEXTURE_*, INTEGRATOR_*). The defaults keep
 // every feature, so an unspecialized pipeline is the all-features pipeline. core/ code guards
 // each type's branch with TR_HAS_*; after specialization the driver folds the guards and drops
-// the code of unused types. The host side is gpu_backend/scene_features.h.
+// the code of unused types. The host side is scenes/scene_features.h.
 #ifndef TWINRAY_SHADERS_FEATURES_GLSL
 #define TWINRAY_SHADERS_FEATURES_GLSL
 

@@ -1,5 +1,8 @@
-// The scene's feature masks, passed to every shader stage as the specialization constants
-// of shaders/features.glsl (constant_id 0..9, in this struct's order).
+// The scene's feature masks: which BSDFs, emitters, shapes, ... its records use. Both backends
+// compile the core for the features a scene has (core/prelude.h's TR_HAS_* guards): the GPU
+// passes them to every shader stage as the specialization constants of shaders/features.glsl
+// (constant_id 0..9, in this struct's order), the CPU picks the smallest of its precompiled
+// kernels that covers them (cpu_backend/cpu_kernels.h).
 #pragma once
 
 #include <cstdint>
@@ -25,7 +28,10 @@ struct SceneFeatures {
 
 SceneFeatures scene_features(const SceneBuffers& scene);
 
-// Every bit set: the all-features pipeline.
+// Every bit set: the all-features pipeline (kernel).
 SceneFeatures all_features();
+
+// Whether every feature of `inner` is one of `outer`'s.
+bool features_cover(const SceneFeatures& outer, const SceneFeatures& inner);
 
 }  // namespace tr

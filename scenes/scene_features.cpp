@@ -1,4 +1,4 @@
-#include "gpu_backend/scene_features.h"
+#include "scenes/scene_features.h"
 
 namespace tr {
 
@@ -25,6 +25,20 @@ SceneFeatures scene_features(const SceneBuffers& scene) {
 
 SceneFeatures all_features() {
   return SceneFeatures{~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u};
+}
+
+bool features_cover(const SceneFeatures& outer, const SceneFeatures& inner) {
+  auto covers = [](uint32_t o, uint32_t i) { return (i & ~o) == 0u; };
+  return covers(outer.bsdf_types, inner.bsdf_types) &&
+         covers(outer.emitter_types, inner.emitter_types) &&
+         covers(outer.shape_types, inner.shape_types) &&
+         covers(outer.texture_types, inner.texture_types) &&
+         covers(outer.material_flags, inner.material_flags) &&
+         covers(outer.integrator_types, inner.integrator_types) &&
+         covers(outer.aov_types, inner.aov_types) &&
+         covers(outer.sampler_types, inner.sampler_types) &&
+         covers(outer.textured_slots, inner.textured_slots) &&
+         covers(outer.emitter_selections, inner.emitter_selections);
 }
 
 }  // namespace tr
