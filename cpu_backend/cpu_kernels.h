@@ -4,7 +4,7 @@
 // (shaders/features.glsl). A scene renders with the first kernel whose features cover its own
 // (scenes/scene_features.h); the last has every feature. One source, so every kernel that
 // covers a scene computes the same values bit for bit: the guards only drop the code of features
-// the scene lacks. Without it GCC inlines more of the vertex routine (BENCHMARKS.md, "CPU
+// the scene lacks, and GCC inlines more of what is left into one routine (BENCHMARKS.md, "CPU
 // kernels").
 #pragma once
 
