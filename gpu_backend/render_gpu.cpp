@@ -10,11 +10,11 @@
 #include "gpu_backend/gpu_error.h"
 #include "gpu_backend/gpu_scene.h"
 #include "gpu_backend/rt_pipeline.h"
-#include "scenes/scene_features.h"
 #include "gpu_backend/variance_merge.h"
 #include "gpu_backend/vk_device.h"
 #include "gpu_backend/vk_instance.h"
 #include "render/pass_size.h"
+#include "scenes/scene_features.h"
 #include "spirv/raygen.h"
 #include "spirv/raygen_loops.h"
 

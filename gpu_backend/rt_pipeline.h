@@ -9,8 +9,8 @@
 
 #include <vulkan/vulkan.h>
 
-#include "scenes/scene_features.h"
 #include "gpu_backend/vk_device.h"
+#include "scenes/scene_features.h"
 
 namespace tr {
 
