@@ -11,8 +11,8 @@
 # env: TWINRAY (build/app/twinray), THREADS (2), SPP (64), ROUNDS (5)
 #
 # Each program runs as two fresh copies of its files (Mitsuba's libraries and plugins found
-# through LD_LIBRARY_PATH): on the 2-core VM a file just written by the linker can run 15-20%
-# slower than a copy of it (BENCHMARKS.md, "CPU kernels"). After one warm-up run of each, ROUNDS
+# through LD_LIBRARY_PATH): on the 2-core VM the same bytes in another file can run 15-20%
+# faster or slower (BENCHMARKS.md, "CPU kernels"). After one warm-up run of each, ROUNDS
 # rounds of Mitsuba 1, twinray 1, Mitsuba 2, twinray 2. Render phase: Mitsuba's "Rendering
 # finished. (took ...)" line and twinray's summary line.
 set -euo pipefail
