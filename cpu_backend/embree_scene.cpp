@@ -88,8 +88,8 @@ void analytic_bounds(const Shape& s, vec3& lower, vec3& upper) {
 
 void EmbreeScene::record_new_scenes(RayRecorder* recorder) { new_scene_recorder = recorder; }
 
-EmbreeScene::EmbreeScene(const SceneBuffers& buffers)
-    : buffers_(buffers), recorder_(new_scene_recorder) {
+EmbreeScene::EmbreeScene(const SceneBuffers& buffers, bool robust)
+    : buffers_(buffers), robust_(robust), recorder_(new_scene_recorder) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("Embree: cannot create a device");
   rtcSetDeviceErrorFunction(device_, error_callback, &error_);
@@ -117,7 +117,7 @@ EmbreeScene::EmbreeScene(const SceneBuffers& buffers)
 
 RTCScene EmbreeScene::new_scene() {
   RTCScene scene = rtcNewScene(device_);
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(scene, robust_ ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
   return scene;
 }

@@ -52,11 +52,13 @@ class RayRecorder {
 
 class EmbreeScene {
  public:
-  explicit EmbreeScene(const SceneBuffers& buffers);
+  // robust: Embree's robust traversal (RTC_SCENE_FLAG_ROBUST), Scene::robust_intersections.
+  EmbreeScene(const SceneBuffers& buffers, bool robust);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
+  bool robust() const { return robust_; }
   Hit intersect(const Ray& ray) const;
   bool occluded(const Ray& ray) const;
 
@@ -89,6 +91,7 @@ class EmbreeScene {
   bool trace_occluded(const Ray& ray) const;
 
   const SceneBuffers& buffers_;
+  bool robust_;
   RayRecorder* recorder_ = nullptr;
   RTCDevice device_ = nullptr;
   RTCScene root_ = nullptr;

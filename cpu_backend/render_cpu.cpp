@@ -49,7 +49,7 @@ class CpuRenderer final : public Renderer {
         binding_(scene.buffers),
         kernel_(chosen_kernel(scene_features(scene.buffers), tuning)) {
     auto start = std::chrono::steady_clock::now();
-    accel_ = std::make_unique<EmbreeScene>(scene.buffers);
+    accel_ = std::make_unique<EmbreeScene>(scene.buffers, scene.robust_intersections);
     build_seconds_ = seconds_since(start);
   }
 
@@ -95,7 +95,8 @@ class CpuRenderer final : public Renderer {
   std::string backend() const override { return "cpu"; }
   std::string device() const override {
     return "Embree " + std::string(RTC_VERSION_STRING) + ", " + std::to_string(threads_) +
-           (threads_ == 1 ? " thread" : " threads") + ", kernel " + kCpuKernels[kernel_].name;
+           (threads_ == 1 ? " thread" : " threads") + ", kernel " + kCpuKernels[kernel_].name +
+           (accel_->robust() ? "" : ", traversal not robust");
   }
   uint seed() const override { return seed_; }
 

@@ -34,6 +34,24 @@ bool used_only_by_reference(const Node& o) {
          o.tag == "rfilter";
 }
 
+// The build parameters of Mitsuba's own kd-tree (src/render/scene.cpp marks them read in every
+// build; only a build without Embree uses them): they shape an acceleration structure that
+// twinray does not have, never the image.
+bool is_kd_tree_parameter(const std::string& name) {
+  static const char* const names[] = {"kd_intersection_cost",
+                                      "kd_traversal_cost",
+                                      "kd_empty_space_bonus",
+                                      "kd_stop_prims",
+                                      "kd_max_depth",
+                                      "kd_min_max_bins",
+                                      "kd_clip",
+                                      "kd_retract_bad_splits",
+                                      "kd_exact_primitive_threshold"};
+  for (const char* n : names)
+    if (name == n) return true;
+  return false;
+}
+
 }  // namespace
 
 SceneBuilder::SceneBuilder(ParsedScene parsed, const std::string& path)
@@ -48,9 +66,15 @@ Scene SceneBuilder::build() {
   bool have_sensor = false, have_integrator = false;
   std::map<const Node*, int> holders;
   count_holders(root, holders);
+  scene_.robust_intersections = take_bool(root, "embree_use_robust_intersections", true);
   for (Property& p : root.props) {
-    if (p.kind != PropertyKind::Object)
-      fail(p.loc, "parameter '", p.name, "' cannot be set on <scene>");
+    if (p.kind != PropertyKind::Object) {
+      if (p.name == "embree_use_robust_intersections") continue;
+      if (!is_kd_tree_parameter(p.name))
+        fail(p.loc, "parameter '", p.name, "' cannot be set on <scene>");
+      p.used = true;
+      continue;
+    }
     p.used = true;
     Node& o = *p.object;
     if (used_only_by_reference(o)) {

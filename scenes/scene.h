@@ -45,6 +45,10 @@ struct Scene {
   // Mitsuba `aov`: per output variable (Integrator.aov_types order), its EXR channel names.
   std::vector<std::vector<std::string>> aov_channels;
   std::string sample_count_note;  // how sample_count was rounded, empty when it was not
+  // <scene> embree_use_robust_intersections: the CPU's Embree traversal in its robust mode
+  // (watertight: no ray passes between the triangles of a shared edge). Mitsuba's default is
+  // false; twinray's is true (scenes/README.md).
+  bool robust_intersections = true;
 };
 
 // Bad input: `what()` is one line, "file:line: what and why".

@@ -82,6 +82,9 @@ TEST(SceneErrors, UnknownOrUnusedParameters) {
   expect_error("\n<shape type=\"sphere\" colour=\"red\"/>", "colour",
                "unexpected attribute 'colour'");
   expect_error("\n<float name=\"scale\" value=\"2\"/>", "scale", "cannot be set on <scene>");
+  expect_error("\n<float name=\"kd_cost\" value=\"2\"/>", "kd_cost", "cannot be set on <scene>");
+  expect_error("\n<string name=\"embree_use_robust_intersections\" value=\"yes\"/>", "embree",
+               "must be a boolean");
 }
 
 TEST(SceneErrors, WrongTypesAndValues) {

@@ -108,6 +108,27 @@ TEST(SceneValues, LookAtCamera) {
   expect_near(apply(c.to_world, glm::dvec3(1, 0, 0)), glm::dvec3(2, 2, 3), 1e-6);
 }
 
+// Mitsuba's <scene> reads embree_use_robust_intersections (a boolean) and marks its kd-tree's
+// build parameters read in every build (src/render/scene.cpp).
+TEST(SceneValues, SceneAccelerationParameters) {
+  EXPECT_TRUE(load_text("").robust_intersections);
+  EXPECT_FALSE(load_text("<boolean name=\"embree_use_robust_intersections\" value=\"false\"/>")
+                   .robust_intersections);
+  EXPECT_TRUE(load_text("<boolean name=\"embree_use_robust_intersections\" value=\"true\"/>")
+                  .robust_intersections);
+  Scene kd = load_text(
+      "<float name=\"kd_intersection_cost\" value=\"20\"/>"
+      "<float name=\"kd_traversal_cost\" value=\"15\"/>"
+      "<float name=\"kd_empty_space_bonus\" value=\"0.9\"/>"
+      "<integer name=\"kd_stop_prims\" value=\"8\"/>"
+      "<integer name=\"kd_max_depth\" value=\"0\"/>"
+      "<integer name=\"kd_min_max_bins\" value=\"128\"/>"
+      "<boolean name=\"kd_clip\" value=\"true\"/>"
+      "<integer name=\"kd_retract_bad_splits\" value=\"1\"/>"
+      "<integer name=\"kd_exact_primitive_threshold\" value=\"65536\"/>");
+  EXPECT_TRUE(kd.robust_intersections);
+}
+
 TEST(SceneValues, TransformsComposeInDocumentOrder) {
   Scene s = load_text(
       "<shape type=\"sphere\"><transform name=\"to_world\">"
