@@ -12,6 +12,7 @@
 #include <array>
 #include <string_view>
 
+#include "io/image.h"
 #include "io/image_formats.h"
 
 namespace tr {
@@ -97,30 +98,40 @@ Samples read_exr_samples(const std::string& path, const HeaderCheck& check) try 
   fail_image(path, e.what());
 }
 
-void write_exr_file(const std::string& path, const std::string& file, int width, int height,
-                    const std::vector<std::string>& names, const std::vector<float>& values,
-                    const std::map<std::string, std::string>& metadata, bool half) try {
-  Imf::Header header(width, height);
+void write_exr_file(const std::string& path, const std::string& file, const ImageRows& img,
+                    const std::vector<std::string>& names, bool half) try {
+  Imf::Header header(img.width, img.height);
   header.compression() = Imf::ZIP_COMPRESSION;
   for (const std::string& name : names)
     header.channels().insert(name, Imf::Channel(half ? Imf::HALF : Imf::FLOAT));
-  for (const auto& [key, value] : metadata) header.insert(key, Imf::StringAttribute(value));
-  const int channels = int(names.size());
-  // OpenEXR converts pixel types when reading only: half channels are written from halves.
-  std::vector<Imath::half> halves(half ? values.size() : 0);
-  std::copy(values.begin(), values.begin() + std::ptrdiff_t(halves.size()), halves.begin());
-  const char* base = half ? reinterpret_cast<const char*>(halves.data())
-                          : reinterpret_cast<const char*>(values.data());
-  const size_t sample = half ? sizeof(Imath::half) : sizeof(float);
-  const size_t x_stride = sample * channels;
-  Imf::FrameBuffer frame;
-  for (int c = 0; c < channels; ++c)
-    frame.insert(names[c],
-                 Imf::Slice(half ? Imf::HALF : Imf::FLOAT, const_cast<char*>(base + c * sample),
-                            x_stride, x_stride * width));
+  for (const auto& [key, value] : img.metadata) header.insert(key, Imf::StringAttribute(value));
   Imf::OutputFile out(file.c_str(), header);
-  out.setFrameBuffer(frame);
-  out.writePixels(height);
+  // A strip of the scanlines that ZIP compresses together (16) is developed, converted and
+  // handed to OpenEXR at a time. OpenEXR converts pixel types when reading only: half channels
+  // are written from halves.
+  const int strip = std::min(img.height, 16);
+  const size_t row_values = size_t(img.width) * img.channels;
+  std::vector<float> values(row_values * strip);
+  std::vector<Imath::half> halves(half ? values.size() : 0);
+  const size_t sample = half ? sizeof(Imath::half) : sizeof(float);
+  const size_t x_stride = sample * img.channels;
+  const size_t y_stride = x_stride * img.width;
+  for (int y0 = 0; y0 < img.height; y0 += strip) {
+    const int rows = std::min(strip, img.height - y0);
+    for (int r = 0; r < rows; ++r) img.row(y0 + r, values.data() + r * row_values);
+    std::copy(values.begin(), values.begin() + std::ptrdiff_t(halves.size()), halves.begin());
+    // Slices address pixel (x, y) at base + x * x_stride + y * y_stride: base is the strip's
+    // buffer moved back by y0 rows.
+    const char* buffer = half ? reinterpret_cast<const char*>(halves.data())
+                              : reinterpret_cast<const char*>(values.data());
+    char* base = const_cast<char*>(buffer) - std::ptrdiff_t(y0) * std::ptrdiff_t(y_stride);
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < img.channels; ++c)
+      frame.insert(names[c], Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * sample, x_stride,
+                                        y_stride));
+    out.setFrameBuffer(frame);
+    out.writePixels(rows);
+  }
 } catch (const Iex::BaseExc& e) {
   fail_image(path, e.what());
 }

@@ -32,8 +32,34 @@ bool starts_with(const std::string& head, const char* magic) {
   return head.compare(0, std::strlen(magic), magic) == 0;
 }
 
-std::vector<std::string> names_of(const Image& img) {
+template <class ImageOrRows>
+std::vector<std::string> names_of(const ImageOrRows& img) {
   return img.channel_names.empty() ? default_channel_names(img.channels) : img.channel_names;
+}
+
+template <class ImageOrRows>
+void check_shape(const std::string& path, const ImageOrRows& img) {
+  if (img.width <= 0 || img.height <= 0 || img.channels <= 0)
+    fail_image(path, "image has no pixels (" + std::to_string(img.width) + "x" +
+                         std::to_string(img.height) + "x" + std::to_string(img.channels) + ")");
+  if (!img.channel_names.empty() && int(img.channel_names.size()) != img.channels)
+    fail_image(path, "image has " + std::to_string(img.channels) + " channels but " +
+                         std::to_string(img.channel_names.size()) + " channel names");
+}
+
+// The rows of a whole image (check_image_shape first); the result refers to img.
+ImageRows rows_of(const Image& img) {
+  ImageRows rows;
+  rows.width = img.width;
+  rows.height = img.height;
+  rows.channels = img.channels;
+  rows.channel_names = img.channel_names;
+  rows.metadata = img.metadata;
+  const size_t row_values = size_t(img.width) * img.channels;
+  rows.row = [&img, row_values](int y, float* out) {
+    std::copy_n(img.pixels.begin() + std::ptrdiff_t(size_t(y) * row_values), row_values, out);
+  };
+  return rows;
 }
 
 }  // namespace
@@ -57,16 +83,11 @@ std::vector<std::string> default_channel_names(int channels) {
 }
 
 void check_image_shape(const std::string& path, const Image& img) {
-  if (img.width <= 0 || img.height <= 0 || img.channels <= 0)
-    fail_image(path, "image has no pixels (" + std::to_string(img.width) + "x" +
-                         std::to_string(img.height) + "x" + std::to_string(img.channels) + ")");
+  check_shape(path, img);
   size_t expected = size_t(img.width) * img.height * img.channels;
   if (img.pixels.size() != expected)
     fail_image(path, "image holds " + std::to_string(img.pixels.size()) +
                          " values, its shape needs " + std::to_string(expected));
-  if (!img.channel_names.empty() && int(img.channel_names.size()) != img.channels)
-    fail_image(path, "image has " + std::to_string(img.channels) + " channels but " +
-                         std::to_string(img.channel_names.size()) + " channel names");
 }
 
 Samples read_samples(const std::string& path, const HeaderCheck& check) {
@@ -112,30 +133,42 @@ Image read_image(const std::string& path) {
   return img;
 }
 
+void write_exr(const std::string& path, const ImageRows& img, bool half) {
+  check_shape(path, img);
+  const std::vector<std::string> names = names_of(img);
+  write_atomic(path,
+               [&](const std::string& file) { write_exr_file(path, file, img, names, half); });
+}
+
 void write_exr(const std::string& path, const Image& img, bool half) {
   check_image_shape(path, img);
+  write_exr(path, rows_of(img), half);
+}
+
+void write_png_srgb(const std::string& path, const ImageRows& img) {
+  check_shape(path, img);
+  if (img.channels > 4)
+    fail_image(path, "PNG holds at most 4 channels, image has " + std::to_string(img.channels));
+  const std::vector<std::string> names = names_of(img);
+  std::vector<float> values(size_t(img.width) * img.channels);
+  auto encoded_row = [&](int y, unsigned char* out) {
+    img.row(y, values.data());
+    for (size_t i = 0; i < values.size(); ++i) {
+      float v = values[i];
+      float encoded = is_alpha_name(names[i % img.channels])
+                          ? std::fmin(std::fmax(v, 0.0f), 1.0f)  // fmax maps NaN to 0
+                          : srgb_encode(v);
+      out[i] = std::uint8_t(std::lround(encoded * 255.0f));
+    }
+  };
   write_atomic(path, [&](const std::string& file) {
-    write_exr_file(path, file, img.width, img.height, names_of(img), img.pixels, img.metadata,
-                   half);
+    write_png_file(path, file, img.width, img.height, img.channels, encoded_row, img.metadata);
   });
 }
 
 void write_png_srgb(const std::string& path, const Image& img) {
   check_image_shape(path, img);
-  if (img.channels > 4)
-    fail_image(path, "PNG holds at most 4 channels, image has " + std::to_string(img.channels));
-  std::vector<std::string> names = names_of(img);
-  std::vector<std::uint8_t> bytes(img.pixels.size());
-  for (size_t i = 0; i < img.pixels.size(); ++i) {
-    float v = img.pixels[i];
-    float encoded = is_alpha_name(names[i % img.channels])
-                        ? std::fmin(std::fmax(v, 0.0f), 1.0f)  // fmax maps NaN to 0
-                        : srgb_encode(v);
-    bytes[i] = std::uint8_t(std::lround(encoded * 255.0f));
-  }
-  write_atomic(path, [&](const std::string& file) {
-    write_png_file(path, file, img.width, img.height, img.channels, bytes, img.metadata);
-  });
+  write_png_srgb(path, rows_of(img));
 }
 
 }  // namespace tr

@@ -11,6 +11,8 @@
 
 namespace tr {
 
+struct ImageRows;  // io/image.h
+
 struct Samples {
   int width = 0, height = 0, channels = 0;
   int bytes_per_channel = 0;  // of the widest channel in the file
@@ -50,15 +52,15 @@ Samples read_stb_samples(const std::string& path, const HeaderCheck& check);
 Samples read_pnm_samples(const std::string& path, const HeaderCheck& check);
 Samples read_pfm_samples(const std::string& path, const HeaderCheck& check);
 
-// `values` in the order of `names`; 16-bit floats when `half`; ZIP compression; metadata as
-// string attributes. Writes to `file` (the caller makes the write atomic).
-void write_exr_file(const std::string& path, const std::string& file, int width, int height,
-                    const std::vector<std::string>& names, const std::vector<float>& values,
-                    const std::map<std::string, std::string>& metadata, bool half);
+// img.row's values in the order of `names`; 16-bit floats when `half`; ZIP compression;
+// metadata as string attributes. Writes to `file` (the caller makes the write atomic).
+void write_exr_file(const std::string& path, const std::string& file, const ImageRows& img,
+                    const std::vector<std::string>& names, bool half);
 
 // 8-bit samples, 1 to 4 channels (Y, YA, RGB, RGBA), tagged sRGB; metadata as text chunks.
+// row(y, out) fills `out` with row y's width * channels bytes.
 void write_png_file(const std::string& path, const std::string& file, int width, int height,
-                    int channels, const std::vector<unsigned char>& bytes,
+                    int channels, const std::function<void(int y, unsigned char* out)>& row,
                     const std::map<std::string, std::string>& metadata);
 
 }  // namespace tr

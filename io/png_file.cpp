@@ -149,7 +149,7 @@ Samples read_png_samples(const std::string& path, const HeaderCheck& check) {
 }
 
 void write_png_file(const std::string& path, const std::string& file_name, int width, int height,
-                    int channels, const std::vector<unsigned char>& bytes,
+                    int channels, const std::function<void(int y, unsigned char* out)>& row,
                     const std::map<std::string, std::string>& metadata) {
   static const int color_types[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
                                     PNG_COLOR_TYPE_RGB, PNG_COLOR_TYPE_RGB_ALPHA};
@@ -157,7 +157,7 @@ void write_png_file(const std::string& path, const std::string& file_name, int w
   PngWriter w;
   if (!w.info) fail_image(path, "out of memory");
   std::vector<png_text> text(metadata.size());
-  std::vector<png_const_bytep> rows(height);
+  std::vector<unsigned char> bytes(size_t(width) * channels);
   size_t i = 0;
   for (const auto& [key, value] : metadata) {
     text[i].compression = PNG_TEXT_COMPRESSION_NONE;
@@ -166,17 +166,20 @@ void write_png_file(const std::string& path, const std::string& file_name, int w
     text[i].text_length = value.size();
     ++i;
   }
-  for (int y = 0; y < height; ++y) rows[y] = bytes.data() + size_t(y) * width * channels;
-  const bool written = guarded(w.png, [&] {
+  bool written = guarded(w.png, [&] {
     png_init_io(w.png, file.get());
     png_set_IHDR(w.png, w.info, width, height, 8, color_types[channels - 1], PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
     if (!text.empty()) png_set_text(w.png, w.info, text.data(), int(text.size()));
     png_write_info(w.png, w.info);
-    png_write_image(w.png, const_cast<png_bytepp>(rows.data()));
-    png_write_end(w.png, w.info);
   });
+  // Each row is made outside guarded(), whose longjmp would skip its destructors.
+  for (int y = 0; y < height && written; ++y) {
+    row(y, bytes.data());
+    written = guarded(w.png, [&] { png_write_row(w.png, bytes.data()); });
+  }
+  written = written && guarded(w.png, [&] { png_write_end(w.png, w.info); });
   if (!written) fail_image(path, w.errors.message);
   if (std::fflush(file.get()) != 0)
     fail_image(path, std::string("write failed: ") + std::strerror(errno));

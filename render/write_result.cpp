@@ -12,10 +12,12 @@ namespace {
 // Value v (0: mean, 1: variance) of accumulator i, three doubles, into out.
 using Develop = std::function<void(std::size_t i, int v, double out[3])>;
 
-// R, G, B, then each AOV's channels, taken from its three values per pixel, as floats.
-Image developed_image(const RenderResult& r, int v, const Develop& pixel, const Develop& aov,
-                      const std::vector<std::vector<std::string>>& aov_channels) {
-  Image img;
+// R, G, B, then each AOV's channels, taken from its three values per pixel, as floats, developed
+// row by row as the file is written: no image of the whole render is made (the peak memory of
+// a render, BENCHMARKS.md "Memory", is the film's).
+ImageRows developed_rows(const RenderResult& r, int v, const Develop& pixel, const Develop& aov,
+                         const std::vector<std::vector<std::string>>& aov_channels) {
+  ImageRows img;
   img.width = int(r.width);
   img.height = int(r.height);
   img.channels = 3;
@@ -25,22 +27,20 @@ Image developed_image(const RenderResult& r, int v, const Develop& pixel, const 
       img.channel_names.insert(img.channel_names.end(), names.begin(), names.end());
     img.channels = int(img.channel_names.size());
   }
-  const size_t pixels = size_t(r.width) * r.height;
-  img.pixels.reserve(pixels * img.channels);
-  double value[3];
-  for (size_t p = 0; p < pixels; ++p) {
-    pixel(p, v, value);
-    for (int c = 0; c < 3; ++c) img.pixels.push_back(float(value[c]));
-    for (size_t a = 0; a < aov_channels.size(); ++a) {
-      aov(p * r.aov_count + a, v, value);
-      for (size_t c = 0; c < aov_channels[a].size(); ++c) img.pixels.push_back(float(value[c]));
+  img.row = [&r, v, &pixel, &aov, &aov_channels](int y, float* out) {
+    double value[3];
+    for (size_t p = size_t(y) * r.width; p < size_t(y + 1) * r.width; ++p) {
+      pixel(p, v, value);
+      for (int c = 0; c < 3; ++c) *out++ = float(value[c]);
+      for (size_t a = 0; a < aov_channels.size(); ++a) {
+        aov(p * r.aov_count + a, v, value);
+        for (size_t c = 0; c < aov_channels[a].size(); ++c) *out++ = float(value[c]);
+      }
     }
-  }
+  };
   return img;
 }
 
-// One image at a time, each freed before the next is built: with the film or result it is
-// made from, the peak memory of a render (BENCHMARKS.md, "Memory").
 void write_developed(const RenderResult& result, const Develop& pixel, const Develop& aov,
                      const OutputPaths& paths, const std::map<std::string, std::string>& extra,
                      bool half, const std::vector<std::vector<std::string>>& aov_channels) {
@@ -52,20 +52,17 @@ void write_developed(const RenderResult& result, const Develop& pixel, const Dev
   meta["twinray:seconds"] = std::to_string(result.stats.seconds);
   meta["twinray:rejected_nonfinite"] = std::to_string(result.stats.rejected_nonfinite);
   meta["twinray:variance_estimate"] = variance_estimate_name(result.pass_size, result.spp);
-  {
-    Image mean = developed_image(result, 0, pixel, aov, aov_channels);
-    mean.metadata = meta;
-    write_exr(paths.image, mean, half);
-  }
-  {
-    Image var = developed_image(result, 1, pixel, aov, aov_channels);
-    var.metadata = std::move(meta);
-    var.metadata["twinray:content"] =
-        "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
-        "(twinray:variance_estimate says from what)";
-    write_exr(paths.variance, var, half);
-  }
-  write_png_srgb(paths.preview, developed_image(result, 0, pixel, aov, {}));
+  ImageRows mean = developed_rows(result, 0, pixel, aov, aov_channels);
+  mean.metadata = meta;
+  write_exr(paths.image, mean, half);
+  ImageRows var = developed_rows(result, 1, pixel, aov, aov_channels);
+  var.metadata = std::move(meta);
+  var.metadata["twinray:content"] =
+      "per-sample variance v of each pixel's value: v / spp estimates the value's variance "
+      "(twinray:variance_estimate says from what)";
+  write_exr(paths.variance, var, half);
+  const std::vector<std::vector<std::string>> colour_only;
+  write_png_srgb(paths.preview, developed_rows(result, 0, pixel, aov, colour_only));
 }
 
 Develop from_vectors(const std::vector<double>& mean, const std::vector<double>& variance) {

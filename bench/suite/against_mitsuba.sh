@@ -8,7 +8,9 @@
 #   MITSUBA_BUILD_DIR  a Mitsuba build with the scalar_rgb variant (its `mitsuba`, libraries and
 #                      plugins/; validation/mitsuba/README.md says how to build one)
 #   OUT_DIR            copies of both programs, the renders and the raw log (never the repository)
-# env: TWINRAY (build/app/twinray), THREADS (2), SPP (64), ROUNDS (5)
+# env: TWINRAY (build/app/twinray), THREADS (2), SPP (64), ROUNDS (5), ROBUST (unset: the scene
+#      as it is; true or false: a copy of it in OUT_DIR that sets <scene>'s
+#      embree_use_robust_intersections, Mitsuba's default false, twinray's true; scenes/README.md)
 #
 # Each program runs as two fresh copies of its files (Mitsuba's libraries and plugins found
 # through LD_LIBRARY_PATH): on the 2-core VM the same bytes in another file can run 15-20%
@@ -29,6 +31,14 @@ scene_dir=$root/../shared/perf/mitsuba-cbox
 [ -x "$mts/mitsuba" ] || { echo "$0: no mitsuba executable in $mts" >&2; exit 2; }
 [ -f "$scene_dir/cbox-rgb.xml" ] || { echo "$0: $scene_dir/cbox-rgb.xml not found" >&2; exit 2; }
 mkdir -p "$out"
+if [ -n "${ROBUST:-}" ]; then
+  [ "$ROBUST" = true ] || [ "$ROBUST" = false ] || { echo "$0: ROBUST must be true or false" >&2; exit 2; }
+  rm -rf "$out/scene" && cp -r "$scene_dir" "$out/scene" && chmod -R u+w "$out/scene"
+  sed -i "0,/<scene version=\"3.0.0\">/s//&\n    <boolean name=\"embree_use_robust_intersections\" value=\"$ROBUST\"\/>/" \
+    "$out/scene/cbox-rgb.xml"
+  grep -q embree_use_robust_intersections "$out/scene/cbox-rgb.xml"
+  scene_dir=$(cd "$out/scene" && pwd)
+fi
 for c in 1 2; do
   rm -rf "$out/mitsuba$c" && mkdir -p "$out/mitsuba$c"
   cp -a "$mts/mitsuba" "$mts"/*.so* "$mts/plugins" "$out/mitsuba$c/"
