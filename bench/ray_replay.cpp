@@ -1,6 +1,6 @@
 // The renderer against Embree alone on the renderer's own rays (issue 15):
 //   bench_ray_replay --scene=FILE [--spp=N] [--threads=N] [--seed=S] [--max-rays=N]
-//                    [-D NAME=VALUE]...
+//                    [--packets=4|8|16] [-D NAME=VALUE]...
 // 1. renders the scene on the CPU backend and times it (no recording);
 // 2. renders it again, same seed and threads, with an EmbreeScene RayRecorder that keeps every
 //    closest-hit and shadow query per thread, in the order the thread traced them, with its
@@ -10,6 +10,11 @@
 //    the recorded one (a mismatch is an error: exit 1) and once timed.
 // The replay runs on as many threads as the render, over chunks of consecutive rays of one
 // thread's record, each chunk in its recorded order: the coherence the renderer had.
+// --packets=N also replays them as Embree packets of N rays (rtcIntersectN / rtcOccludedN: what
+// a wavefront renderer would trace), twice: each chunk's closest-hit and shadow queries apart
+// in recorded order, and the same sorted by direction octant and origin (Morton order), a
+// bound on the coherence that sorting a wavefront's rays could give; the sort is not timed.
+// Scenes of meshes only (twinray's analytic shapes are user geometry written for one ray).
 // Rays/s of the render over rays/s of the replay is the share of the render's time that
 // traversal alone takes; it is reported over wall-clock and over process CPU time (the latter
 // is what counts where other processes load the machine).
@@ -122,6 +127,161 @@ std::uint64_t replay(RTCScene scene, const Chunk& c) {
   return result;
 }
 
+// Embree's packet types and calls for N = 4, 8, 16.
+template <int N>
+struct Packet;
+template <>
+struct Packet<4> {
+  using RayHit = RTCRayHit4;
+  using RayN = RTCRay4;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    rtcIntersect4(v, s, c, r);
+  }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
+    rtcOccluded4(v, s, c, r);
+  }
+};
+template <>
+struct Packet<8> {
+  using RayHit = RTCRayHit8;
+  using RayN = RTCRay8;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    rtcIntersect8(v, s, c, r);
+  }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
+    rtcOccluded8(v, s, c, r);
+  }
+};
+template <>
+struct Packet<16> {
+  using RayHit = RTCRayHit16;
+  using RayN = RTCRay16;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    rtcIntersect16(v, s, c, r);
+  }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
+    rtcOccluded16(v, s, c, r);
+  }
+};
+
+// Lane i of a packet ray from one recorded ray.
+template <class RayN>
+void set_lane(RayN& p, int i, const Ray& ray) {
+  const RTCRay r = tr::embree_ray(ray);
+  p.org_x[i] = r.org_x;
+  p.org_y[i] = r.org_y;
+  p.org_z[i] = r.org_z;
+  p.tnear[i] = r.tnear;
+  p.dir_x[i] = r.dir_x;
+  p.dir_y[i] = r.dir_y;
+  p.dir_z[i] = r.dir_z;
+  p.time[i] = r.time;
+  p.tfar[i] = r.tfar;
+  p.mask[i] = r.mask;
+  p.id[i] = r.id;
+  p.flags[i] = r.flags;
+}
+
+// The records of one query kind, N at a time, as packets (the last one partly valid); with
+// kCheck, how many answers differ from the recorded ones, else a value to keep.
+template <int N, bool kCheck>
+std::uint64_t replay_packets(RTCScene scene, const std::vector<const RayRecord*>& rays) {
+  std::uint64_t result = 0;
+  alignas(64) int valid[N];
+  for (size_t first = 0; first < rays.size(); first += N) {
+    const int lanes = int(std::min<size_t>(N, rays.size() - first));
+    for (int i = 0; i < N; ++i) valid[i] = i < lanes ? -1 : 0;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    if (rays[first]->query == kClosest) {
+      alignas(64) typename Packet<N>::RayHit rh;
+      for (int i = 0; i < lanes; ++i) {
+        set_lane(rh.ray, i, rays[first + i]->ray);
+        rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+      }
+      Packet<N>::intersect(valid, scene, &context, &rh);
+      for (int i = 0; i < lanes; ++i) {
+        const RayRecord& r = *rays[first + i];
+        const bool hit = rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+        if (kCheck) {
+          bool same = hit == (r.shape != tr::NO_INDEX);
+          if (same && hit)
+            same = std::memcmp(&rh.ray.tfar[i], &r.t, sizeof(float)) == 0 &&
+                   rh.hit.primID[i] == r.primitive;
+          result += same ? 0u : 1u;
+        } else {
+          result += hit ? rh.hit.primID[i] : 0u;
+        }
+      }
+    } else {
+      alignas(64) typename Packet<N>::RayN ray;
+      for (int i = 0; i < lanes; ++i) set_lane(ray, i, rays[first + i]->ray);
+      Packet<N>::occluded(valid, scene, &context, &ray);
+      for (int i = 0; i < lanes; ++i) {
+        const bool occluded = ray.tfar[i] < 0.0f;
+        if (kCheck)
+          result += occluded == (rays[first + i]->shape != 0u) ? 0u : 1u;
+        else
+          result += occluded ? 1u : 0u;
+      }
+    }
+  }
+  return result;
+}
+
+// 30 bits of Morton code of p within the scene's bounds [lo, hi].
+std::uint32_t morton(glm::vec3 p, glm::vec3 lo, glm::vec3 hi) {
+  auto spread = [](std::uint32_t v) {  // 10 bits to every third bit
+    v = (v | (v << 16)) & 0x030000FFu;
+    v = (v | (v << 8)) & 0x0300F00Fu;
+    v = (v | (v << 4)) & 0x030C30C3u;
+    return (v | (v << 2)) & 0x09249249u;
+  };
+  const glm::vec3 u = glm::clamp((p - lo) / glm::max(hi - lo, glm::vec3(1e-20f)), 0.0f, 1.0f);
+  return spread(std::uint32_t(u.x * 1023.0f)) << 2 | spread(std::uint32_t(u.y * 1023.0f)) << 1 |
+         spread(std::uint32_t(u.z * 1023.0f));
+}
+
+// Each chunk's queries split by kind, in recorded order or sorted by (kind, direction octant,
+// origin's Morton code): the packet replay's input, built before it is timed.
+std::vector<std::vector<const RayRecord*>> packet_streams(const std::vector<Chunk>& chunks,
+                                                          bool sorted, const RTCBounds& b) {
+  const glm::vec3 lo(b.lower_x, b.lower_y, b.lower_z), hi(b.upper_x, b.upper_y, b.upper_z);
+  std::vector<std::vector<const RayRecord*>> streams;
+  for (const Chunk& c : chunks) {
+    for (std::uint32_t kind : {kClosest, kShadow}) {
+      std::vector<const RayRecord*> s;
+      for (const RayRecord* r = c.begin; r != c.end; ++r)
+        if (r->query == kind) s.push_back(r);
+      if (sorted) {
+        auto key = [&](const RayRecord* r) {
+          const std::uint64_t octant =
+              (r->ray.d.x < 0.0f) | (r->ray.d.y < 0.0f) << 1 | (r->ray.d.z < 0.0f) << 2;
+          return octant << 32 | morton(r->ray.o, lo, hi);
+        };
+        std::stable_sort(s.begin(), s.end(),
+                         [&](const RayRecord* a, const RayRecord* b) { return key(a) < key(b); });
+      }
+      if (!s.empty()) streams.push_back(std::move(s));
+    }
+  }
+  return streams;
+}
+
+template <int N, bool kCheck>
+std::uint64_t replay_all_packets(RTCScene scene,
+                                 const std::vector<std::vector<const RayRecord*>>& streams) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, streams.size(), 1), std::uint64_t(0),
+      [&](const tbb::blocked_range<size_t>& range, std::uint64_t sum) {
+        for (size_t i = range.begin(); i != range.end(); ++i)
+          sum += replay_packets<N, kCheck>(scene, streams[i]);
+        return sum;
+      },
+      [](std::uint64_t a, std::uint64_t b) { return a + b; });
+}
+
 template <bool kCheck>
 std::uint64_t replay_all(RTCScene scene, const std::vector<Chunk>& chunks) {
   return tbb::parallel_reduce(
@@ -192,6 +352,7 @@ struct Config {
   std::uint32_t threads = 0;
   std::uint32_t seed = 0;
   std::uint64_t max_rays = 20000000;
+  std::uint32_t packets = 0;  // 0: no packet replay
   tr::LoadOptions load;
 };
 
@@ -226,6 +387,10 @@ Config parse(int argc, char** argv) {
       c.seed = std::uint32_t(parse_count("--seed", value("--seed=")));
     } else if (a.rfind("--max-rays=", 0) == 0) {
       c.max_rays = parse_count("--max-rays", value("--max-rays="));
+    } else if (a.rfind("--packets=", 0) == 0) {
+      c.packets = std::uint32_t(parse_count("--packets", value("--packets=")));
+      if (c.packets != 4 && c.packets != 8 && c.packets != 16)
+        throw std::runtime_error("bench_ray_replay: --packets must be 4, 8 or 16");
     } else if (a == "-D" && i + 1 < argc) {
       std::string kv = argv[++i];
       size_t eq = kv.find('=');
@@ -240,6 +405,12 @@ Config parse(int argc, char** argv) {
 
 int run(const Config& config) {
   tr::Scene scene = tr::load_scene(config.scene, config.load);
+  if (config.packets)
+    for (const tr::Shape& shape : scene.buffers.shapes)
+      if (shape.type != tr::SHAPE_MESH)
+        throw std::runtime_error(
+            "bench_ray_replay: --packets needs a scene of meshes only (its analytic shapes are "
+            "Embree user geometry intersected one ray at a time)");
   const std::uint32_t spp = config.spp ? config.spp : scene.spp;
   const std::uint32_t threads =
       config.threads ? config.threads : std::uint32_t(tbb::info::default_concurrency());
@@ -312,11 +483,38 @@ int run(const Config& config) {
       "(rtcIntersect1/rtcOccluded1 alone; checksum " + std::to_string(keep) + ")");
   std::printf("ratio       %.3f wall, %.3f CPU  (renderer rays/s / replay rays/s)\n",
               replay_seconds.wall / render_seconds.wall, replay_seconds.cpu / render_seconds.cpu);
+  std::uint64_t packet_mismatches = 0;
+  if (config.packets) {
+    RTCBounds bounds;
+    rtcGetSceneBounds(rtc, &bounds);
+    for (bool sorted : {false, true}) {
+      const auto streams = packet_streams(chunks, sorted, bounds);
+      std::uint64_t (*check)(RTCScene, const std::vector<std::vector<const RayRecord*>>&) =
+          config.packets == 4   ? replay_all_packets<4, true>
+          : config.packets == 8 ? replay_all_packets<8, true>
+                                : replay_all_packets<16, true>;
+      std::uint64_t (*timed)(RTCScene, const std::vector<std::vector<const RayRecord*>>&) =
+          config.packets == 4   ? replay_all_packets<4, false>
+          : config.packets == 8 ? replay_all_packets<8, false>
+                                : replay_all_packets<16, false>;
+      const std::uint64_t differ = check(rtc, streams);
+      packet_mismatches += differ;
+      Stopwatch packet_watch;
+      const std::uint64_t kept = timed(rtc, streams);
+      const std::string name = "packets of " + std::to_string(config.packets);
+      row(sorted ? "  sorted" : "packets", packet_watch.elapsed(),
+          "(" + name + (sorted ? ", sorted by octant and origin" : ", in recorded order") + "; " +
+              std::to_string(differ) + " answers differ; checksum " + std::to_string(kept) + ")");
+    }
+  }
   std::printf("mismatches  %llu  (replayed answers that differ from the recorded ones)\n",
               (unsigned long long)mismatches);
-  if (mismatches != 0) {
-    std::fprintf(stderr, "bench_ray_replay: %llu replayed rays answer differently than recorded\n",
-                 (unsigned long long)mismatches);
+  if (mismatches + packet_mismatches != 0) {
+    std::fprintf(stderr,
+                 "bench_ray_replay: %llu replayed rays (%llu of them in packets) answer "
+                 "differently than recorded\n",
+                 (unsigned long long)(mismatches + packet_mismatches),
+                 (unsigned long long)packet_mismatches);
     return 1;
   }
   return 0;
