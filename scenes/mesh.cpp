@@ -18,8 +18,8 @@ namespace {
 // (UInt8, Int8, UInt16, ..., UInt64, Int64) leaves out UInt8: uchar values are taken as they
 // are (255 stays 255), as are floating-point ones (rounded to float).
 float ply_float(const PlyProperty& p, double value) {
-  if (!ply_is_integer(p.type) || p.type == "uchar" || p.type == "uint8") return float(value);
-  return srgb_decode(float(value / ply_integer_max(p.type)));
+  if (p.scalar.floating || (p.scalar.size == 1 && !p.scalar.is_signed)) return float(value);
+  return srgb_decode(float(value / p.scalar.integer_max));
 }
 
 // Mitsuba's grouping of the PLY properties a mesh does not use otherwise into named attributes

@@ -16,37 +16,27 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error("PLY: " + what); }
 
-// Byte sizes of the scalar types, under both of the format's spellings.
-int type_size(const std::string& t) {
-  static const std::map<std::string, int> sizes = {
-      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
-      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
-      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-  auto it = sizes.find(t);
-  if (it == sizes.end()) fail("unknown property type '" + t + "'");
-  return it->second;
-}
-
-}  // namespace
-
-bool ply_is_integer(const std::string& t) {
-  return t != "float" && t != "float32" && t != "double" && t != "float64";
-}
-
-double ply_integer_max(const std::string& t) {
-  const int bits = 8 * type_size(t);
-  const bool is_signed_type =
-      t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
-  return std::ldexp(1.0, is_signed_type ? bits - 1 : bits) - 1.0;
-}
-
-namespace {
-
-bool is_float(const std::string& t) {
-  return t == "float" || t == "float32" || t == "double" || t == "float64";
-}
-bool is_signed(const std::string& t) {
-  return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+// The scalar types under both of the format's spellings.
+PlyScalar scalar_type(const std::string& t) {
+  struct Entry {
+    int size;
+    bool floating, is_signed;
+  };
+  static const std::map<std::string, Entry> types = {
+      {"char", {1, false, true}},    {"int8", {1, false, true}},    {"uchar", {1, false, false}},
+      {"uint8", {1, false, false}},  {"short", {2, false, true}},   {"int16", {2, false, true}},
+      {"ushort", {2, false, false}}, {"uint16", {2, false, false}}, {"int", {4, false, true}},
+      {"int32", {4, false, true}},   {"uint", {4, false, false}},   {"uint32", {4, false, false}},
+      {"float", {4, true, true}},    {"float32", {4, true, true}},  {"double", {8, true, true}},
+      {"float64", {8, true, true}}};
+  auto it = types.find(t);
+  if (it == types.end()) fail("unknown property type '" + t + "'");
+  PlyScalar s;
+  s.size = it->second.size;
+  s.floating = it->second.floating;
+  s.is_signed = it->second.is_signed;
+  if (!s.floating) s.integer_max = std::ldexp(1.0, 8 * s.size - (s.is_signed ? 1 : 0)) - 1.0;
+  return s;
 }
 
 enum class Format { Ascii, LittleEndian, BigEndian };
@@ -57,15 +47,15 @@ class BinaryBody {
   BinaryBody(const std::string& data, size_t offset, bool big_endian)
       : data_(data), offset_(offset), big_(big_endian) {}
 
-  double read(const std::string& type) {
-    const int n = type_size(type);
+  double read(const PlyScalar& type) {
+    const int n = type.size;
     if (data_.size() - offset_ < size_t(n))
       fail("the file ends before the data its header declares");
     unsigned char b[8];
     std::memcpy(b, data_.data() + offset_, n);
     offset_ += n;
     if (big_) std::reverse(b, b + n);
-    if (is_float(type)) {
+    if (type.floating) {
       if (n == 4) {
         float f;
         std::memcpy(&f, b, 4);
@@ -77,8 +67,8 @@ class BinaryBody {
     }
     std::uint64_t u = 0;
     std::memcpy(&u, b, n);
-    if (is_signed(type) && n < 8 && (u >> (8 * n - 1)) & 1u) u |= ~std::uint64_t(0) << (8 * n);
-    return is_signed(type) ? double(std::int64_t(u)) : double(u);
+    if (type.is_signed && n < 8 && (u >> (8 * n - 1)) & 1u) u |= ~std::uint64_t(0) << (8 * n);
+    return type.is_signed ? double(std::int64_t(u)) : double(u);
   }
   size_t offset() const { return offset_; }
 
@@ -145,12 +135,12 @@ std::vector<PlyElement> read_ply_file(const std::string& path) {
       words >> type;
       if (type == "list") {
         words >> p.count_type >> p.type >> p.name;
-        type_size(p.count_type);
+        p.count_scalar = scalar_type(p.count_type);
       } else {
         p.type = type;
         words >> p.name;
       }
-      type_size(p.type);
+      p.scalar = scalar_type(p.type);
       if (p.name.empty()) fail("a property without a name");
       elements.back().properties.push_back(p);
     } else {
@@ -182,13 +172,16 @@ std::vector<PlyElement> read_ply_file(const std::string& path) {
   auto is_face_indices = [](const PlyElement& e, const PlyProperty& p) {
     return e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
   };
-  auto add_face_size = [&](PlyElement& e, const PlyProperty& p, double n) {
-    if (!is_face_indices(e, p)) return;
+  // Per element, which of its properties is the face's vertex index list.
+  std::vector<std::vector<char>> face_index_list(elements.size());
+  for (size_t i = 0; i < elements.size(); ++i)
+    for (const PlyProperty& p : elements[i].properties)
+      face_index_list[i].push_back(is_face_indices(elements[i], p));
+  auto add_face_size = [&](PlyElement& e, double n) {
     if (n < 3.0) fail("a face with " + std::to_string(std::int64_t(n)) + " vertices (at least 3)");
     e.face_sizes.push_back(std::uint32_t(n));
   };
-  auto add_index = [&](PlyElement& e, const PlyProperty& p, double v) {
-    if (!is_face_indices(e, p)) return;
+  auto add_index = [&](PlyElement& e, double v) {
     if (!(v >= 0.0 && v < double(vertices)))
       fail("face vertex index " + std::to_string(std::int64_t(v)) + " outside the " +
            std::to_string(vertices) + " vertices");
@@ -206,29 +199,35 @@ std::vector<PlyElement> read_ply_file(const std::string& path) {
       if (*end != '\0') fail("'" + token + "' is not a number");
       return v;
     };
-    for (PlyElement& e : elements)
+    for (size_t j = 0; j < elements.size(); ++j) {
+      PlyElement& e = elements[j];
       for (std::uint64_t i = 0; i < e.count; ++i)
         for (size_t k = 0; k < e.properties.size(); ++k) {
-          const PlyProperty& p = e.properties[k];
-          if (p.count_type.empty()) {
+          if (e.properties[k].count_type.empty()) {
             e.columns[k].push_back(value());
             continue;
           }
           const double n = value();
           if (!(n >= 0.0) || n > 1e9) fail("a list length of " + token);
-          add_face_size(e, p, n);
-          for (std::uint64_t c = 0; c < std::uint64_t(n); ++c) add_index(e, p, value());
+          const bool indices = face_index_list[j][k];
+          if (indices) add_face_size(e, n);
+          for (std::uint64_t c = 0; c < std::uint64_t(n); ++c) {
+            const double v = value();
+            if (indices) add_index(e, v);
+          }
         }
+    }
     return elements;
   }
 
   BinaryBody body(data, pos, format == Format::BigEndian);
-  for (PlyElement& e : elements) {
+  for (size_t j = 0; j < elements.size(); ++j) {
+    PlyElement& e = elements[j];
     bool fixed = true;
     std::uint64_t item_bytes = 0;
     for (const PlyProperty& p : e.properties) {
       fixed &= p.count_type.empty();
-      item_bytes += std::uint64_t(type_size(p.type));
+      item_bytes += std::uint64_t(p.scalar.size);
     }
     // Fixed-size items: the length is known before anything is allocated.
     if (fixed && e.count > (data.size() - body.offset()) / std::max<std::uint64_t>(item_bytes, 1))
@@ -239,13 +238,17 @@ std::vector<PlyElement> read_ply_file(const std::string& path) {
       for (size_t k = 0; k < e.properties.size(); ++k) {
         const PlyProperty& p = e.properties[k];
         if (p.count_type.empty()) {
-          e.columns[k].push_back(body.read(p.type));
+          e.columns[k].push_back(body.read(p.scalar));
           continue;
         }
-        const double n = body.read(p.count_type);
+        const double n = body.read(p.count_scalar);
         if (!(n >= 0.0)) fail("a negative list length");
-        add_face_size(e, p, n);
-        for (std::uint64_t c = 0; c < std::uint64_t(n); ++c) add_index(e, p, body.read(p.type));
+        const bool indices = face_index_list[j][k];
+        if (indices) add_face_size(e, n);
+        for (std::uint64_t c = 0; c < std::uint64_t(n); ++c) {
+          const double v = body.read(p.scalar);
+          if (indices) add_index(e, v);
+        }
       }
   }
   return elements;

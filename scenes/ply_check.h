@@ -9,8 +9,19 @@
 
 namespace tr {
 
+// A scalar type of the format, resolved from its name (either spelling: int8 or char, ...).
+struct PlyScalar {
+  int size = 0;  // bytes
+  bool floating = false;
+  bool is_signed = false;
+  // The largest value of an integer type (Mitsuba's Struct::range(type).second, by which it
+  // normalizes integer properties); 0 for floating-point types.
+  double integer_max = 0.0;
+};
+
 struct PlyProperty {
   std::string name, type, count_type;  // count_type non-empty: a list
+  PlyScalar scalar, count_scalar;      // type and count_type resolved
 };
 
 struct PlyElement {
@@ -29,10 +40,5 @@ struct PlyElement {
 // element with x, y, z (or a face element's index list), the body holds fewer values than the
 // header declares, a face has fewer than 3 corners or names a vertex that does not exist.
 std::vector<PlyElement> read_ply_file(const std::string& path);
-
-// Whether a property type is an integer type, and its largest value (Mitsuba's
-// Struct::range(type).second, by which it normalizes integer properties).
-bool ply_is_integer(const std::string& type);
-double ply_integer_max(const std::string& type);
 
 }  // namespace tr
