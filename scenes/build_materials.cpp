@@ -2,9 +2,11 @@
 // records. Parameters, defaults and refusals are Mitsuba 3.8's (src/bsdfs/*.cpp,
 // src/textures/*.cpp; tests/scenes/plugin_defaults_test.cpp pins them).
 #include <Imath/half.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 #include "core/bsdf/roughplastic.h"
 #include "core/material_slots.h"
@@ -342,8 +344,22 @@ uint SceneBuilder::material(Node& bsdf) {
 // Mitsuba's precomputed roughplastic terms (core/bsdf/roughplastic_table.h): the external
 // transmittance table as a one-row texture, the internal reflectance in value.x.
 TexturedValue SceneBuilder::roughplastic_table(const Material& m) {
-  bool beckmann = (m.flags & MATERIAL_BECKMANN) != 0u;
-  float alpha = m.param[PLASTIC_ALPHA].value.x;
+  const bool beckmann = (m.flags & MATERIAL_BECKMANN) != 0u;
+  const float alpha = m.param[PLASTIC_ALPHA].value.x;
+  const auto key = std::make_tuple(beckmann, alpha, m.eta);
+  if (auto cached = roughplastic_tables_.find(key); cached != roughplastic_tables_.end())
+    return cached->second;
+  // 64 table entries and 64 terms of the internal reflectance, each a quadrature of its own.
+  float transmittance[ROUGHPLASTIC_TABLE_RES];
+  float internal[ROUGHPLASTIC_TABLE_RES];
+  tbb::parallel_for(0u, 2u * ROUGHPLASTIC_TABLE_RES, [&](uint k) {
+    if (k < ROUGHPLASTIC_TABLE_RES)
+      transmittance[k] =
+          roughplastic_external_transmittance(beckmann, alpha, m.eta, roughplastic_table_mu(k));
+    else
+      internal[k - ROUGHPLASTIC_TABLE_RES] =
+          roughplastic_internal_term(beckmann, alpha, m.eta, k - ROUGHPLASTIC_TABLE_RES);
+  });
   Texture t{};
   t.type = TEXTURE_BITMAP;
   t.filter_mode = FILTER_BILINEAR;
@@ -353,14 +369,12 @@ TexturedValue SceneBuilder::roughplastic_table(const Material& m) {
   t.height = 1u;
   t.to_uv[0] = vec4(1.0f, 0.0f, 0.0f, 0.0f);
   t.to_uv[1] = vec4(0.0f, 1.0f, 0.0f, 0.0f);
-  for (uint j = 0; j < ROUGHPLASTIC_TABLE_RES; ++j) {
-    float T = roughplastic_external_transmittance(beckmann, alpha, m.eta, roughplastic_table_mu(j));
-    b_.texels.push_back(vec4(T, T, T, 1.0f));
-  }
+  for (float T : transmittance) b_.texels.push_back(vec4(T, T, T, 1.0f));
   TexturedValue v;
-  v.value = vec3(roughplastic_internal_reflectance(beckmann, alpha, m.eta));
+  v.value = vec3(roughplastic_internal_reflectance_of(internal));
   v.texture = uint(b_.textures.size());
   b_.textures.push_back(t);
+  roughplastic_tables_.emplace(key, v);
   return v;
 }
 

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -63,6 +64,8 @@ class SceneBuilder {
   // roughconductor and roughdielectric, Mitsuba's defaults (beckmann, true, 0.1).
   void microfacet_roughness(Node& bsdf, Material& m, uint slot_u, uint slot_v);
   TexturedValue roughplastic_table(const Material& m);
+  // Its results by (beckmann, alpha, eta): materials alike share one table.
+  std::map<std::tuple<bool, float, float>, TexturedValue> roughplastic_tables_;
   double textured_mean(const TexturedValue& v) const;
   // A BSDF parameter that may be a texture. `scalar`: Mitsuba reads it with eval_1 (one value).
   TexturedValue textured(Node& owner, const std::string& name, glm::dvec3 default_value,

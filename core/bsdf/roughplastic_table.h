@@ -7,8 +7,9 @@
 //   roughplastic_internal_reflectance: 2 * mean over the table's mu_j of mu_j R(mu_j), R the
 //     reflectance of the interface seen from inside (relative IOR 1 / eta), a cosine-weighted
 //     hemispherical average.
-// The loader evaluates these once per material (host side) and stores the table in a
-// one-row texture (core/bsdf/roughplastic.h). Everything is polyglot so both backends could
+// The loader evaluates these once per (distribution, alpha, eta), the table's entries and the
+// internal reflectance's terms in parallel, and stores the table in a one-row texture
+// (core/bsdf/roughplastic.h). Everything is polyglot so both backends could
 // rebuild it; the shaders only read the stored values.
 #ifndef TWINRAY_CORE_BSDF_ROUGHPLASTIC_TABLE_H
 #define TWINRAY_CORE_BSDF_ROUGHPLASTIC_TABLE_H
@@ -102,13 +103,24 @@ INLINE float roughplastic_external_transmittance(bool beckmann, float alpha, flo
   return roughplastic_scattered(beckmann, alpha, eta, mu, true);
 }
 
-INLINE float roughplastic_internal_reflectance(bool beckmann, float alpha, float eta) {
+// Term j of the internal reflectance's mean: mu_j R(mu_j).
+INLINE float roughplastic_internal_term(bool beckmann, float alpha, float eta, uint j) {
+  float mu = roughplastic_table_mu(j);
+  return roughplastic_scattered(beckmann, alpha, 1.0f / eta, mu, false) * mu;
+}
+
+// The internal reflectance from its terms j = 0 .. RES - 1, summed in that order.
+INLINE float roughplastic_internal_reflectance_of(float terms[ROUGHPLASTIC_TABLE_RES]) {
   float sum = 0.0f;
-  for (uint j = 0u; j < ROUGHPLASTIC_TABLE_RES; ++j) {
-    float mu = roughplastic_table_mu(j);
-    sum += roughplastic_scattered(beckmann, alpha, 1.0f / eta, mu, false) * mu;
-  }
+  for (uint j = 0u; j < ROUGHPLASTIC_TABLE_RES; ++j) sum += terms[j];
   return 2.0f * sum / float(ROUGHPLASTIC_TABLE_RES);
+}
+
+INLINE float roughplastic_internal_reflectance(bool beckmann, float alpha, float eta) {
+  float terms[ROUGHPLASTIC_TABLE_RES];
+  for (uint j = 0u; j < ROUGHPLASTIC_TABLE_RES; ++j)
+    terms[j] = roughplastic_internal_term(beckmann, alpha, eta, j);
+  return roughplastic_internal_reflectance_of(terms);
 }
 
 TR_NAMESPACE_END

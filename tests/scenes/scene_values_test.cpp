@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/bsdf/roughplastic.h"
 #include "core/material_slots.h"
 #include "core/transform.h"
 #include "scene_test_files.h"
@@ -324,6 +325,37 @@ TEST(SceneValues, MaterialsAndDefaults) {
   EXPECT_FLOAT_EQ(mat(5).eta, 1.5f);
   EXPECT_FLOAT_EQ(mat(5).param[PRINCIPLED_ROUGHNESS].value.x, 0.5f);
   EXPECT_FLOAT_EQ(mat(5).param[PRINCIPLED_FLATNESS].value.x, 0.25f);
+}
+
+// roughplastic's precomputed table (core/bsdf/roughplastic_table.h) is computed once per
+// (distribution, alpha, eta): materials that differ only elsewhere share it, and its values are
+// those of the core's functions.
+TEST(SceneValues, RoughplasticTablesShared) {
+  auto plastic = [](const char* alpha, const char* rgb) {
+    return std::string(
+               "<shape type=\"sphere\"><bsdf type=\"roughplastic\"><float name=\"alpha\" "
+               "value=\"") +
+           alpha + "\"/><rgb name=\"diffuse_reflectance\" value=\"" + rgb + "\"/></bsdf></shape>";
+  };
+  Scene s = load_text(plastic("0.2", "0.1 0.2 0.3") + plastic("0.2", "0.7 0.7 0.7") +
+                      plastic("0.3", "0.1 0.2 0.3"));
+  auto table = [&](int shape) {
+    return s.buffers.materials[s.buffers.shapes[shape].material].param[ROUGHPLASTIC_TABLE];
+  };
+  EXPECT_NE(s.buffers.shapes[0].material, s.buffers.shapes[1].material);
+  EXPECT_EQ(table(0).texture, table(1).texture);
+  EXPECT_EQ(table(0).value.x, table(1).value.x);
+  EXPECT_NE(table(0).texture, table(2).texture);
+  for (int shape : {0, 2}) {
+    const Material& m = s.buffers.materials[s.buffers.shapes[shape].material];
+    const float alpha = m.param[PLASTIC_ALPHA].value.x;
+    EXPECT_EQ(table(shape).value.x, roughplastic_internal_reflectance(true, alpha, m.eta));
+    const Texture& t = s.buffers.textures[table(shape).texture];
+    ASSERT_EQ(t.width, ROUGHPLASTIC_TABLE_RES);
+    for (uint j = 0; j < ROUGHPLASTIC_TABLE_RES; j += 21)
+      EXPECT_EQ(s.buffers.texels[t.texel_offset + j].x,
+                roughplastic_external_transmittance(true, alpha, m.eta, roughplastic_table_mu(j)));
+  }
 }
 
 // hdrfilm component_format: Mitsuba's default float16, float32 when asked.
