@@ -81,9 +81,11 @@ class BinaryBody {
 }  // namespace
 
 std::vector<PlyElement> read_ply_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) fail("cannot open the file");
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string data(size_t(in.tellg()), '\0');
+  in.seekg(0);
+  if (!in.read(data.data(), std::streamsize(data.size()))) fail("cannot read the file");
 
   // Header: up to "end_header".
   size_t pos = 0;
