@@ -128,41 +128,25 @@ std::uint64_t replay(RTCScene scene, const Chunk& c) {
 }
 
 // Embree's packet types and calls for N = 4, 8, 16.
+template <class RayHitN, class RayN_, auto kIntersect, auto kOccluded>
+struct PacketOf {
+  using RayHit = RayHitN;
+  using RayN = RayN_;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    kIntersect(v, s, c, r);
+  }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
+    kOccluded(v, s, c, r);
+  }
+};
 template <int N>
 struct Packet;
 template <>
-struct Packet<4> {
-  using RayHit = RTCRayHit4;
-  using RayN = RTCRay4;
-  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
-    rtcIntersect4(v, s, c, r);
-  }
-  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
-    rtcOccluded4(v, s, c, r);
-  }
-};
+struct Packet<4> : PacketOf<RTCRayHit4, RTCRay4, rtcIntersect4, rtcOccluded4> {};
 template <>
-struct Packet<8> {
-  using RayHit = RTCRayHit8;
-  using RayN = RTCRay8;
-  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
-    rtcIntersect8(v, s, c, r);
-  }
-  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
-    rtcOccluded8(v, s, c, r);
-  }
-};
+struct Packet<8> : PacketOf<RTCRayHit8, RTCRay8, rtcIntersect8, rtcOccluded8> {};
 template <>
-struct Packet<16> {
-  using RayHit = RTCRayHit16;
-  using RayN = RTCRay16;
-  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
-    rtcIntersect16(v, s, c, r);
-  }
-  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, RayN* r) {
-    rtcOccluded16(v, s, c, r);
-  }
-};
+struct Packet<16> : PacketOf<RTCRayHit16, RTCRay16, rtcIntersect16, rtcOccluded16> {};
 
 // Lane i of a packet ray from one recorded ray.
 template <class RayN>
