@@ -236,6 +236,21 @@ std::vector<PlyElement> read_ply_file(const std::string& path) {
       fail("the file ends before the data its header declares");
     if (fixed)
       for (std::vector<double>& column : e.columns) column.reserve(e.count);
+    // Faces: each item holds at least a triangle's indices, so the file bounds the count of
+    // faces and the reservation follows the header only where the file can hold it.
+    std::uint64_t face_min_bytes = 0;
+    for (size_t k = 0; k < e.properties.size(); ++k) {
+      const PlyProperty& p = e.properties[k];
+      face_min_bytes += face_index_list[j][k]
+                            ? std::uint64_t(p.count_scalar.size + 3 * p.scalar.size)
+                        : p.count_type.empty() ? std::uint64_t(p.scalar.size)
+                                               : std::uint64_t(p.count_scalar.size);
+    }
+    if (e.name == "face" &&
+        e.count <= (data.size() - body.offset()) / std::max<std::uint64_t>(face_min_bytes, 1)) {
+      e.face_sizes.reserve(e.count);
+      e.face_indices.reserve(3 * e.count);
+    }
     for (std::uint64_t i = 0; i < e.count; ++i)
       for (size_t k = 0; k < e.properties.size(); ++k) {
         const PlyProperty& p = e.properties[k];

@@ -46,8 +46,8 @@ struct Scene {
   std::vector<std::vector<std::string>> aov_channels;
   std::string sample_count_note;  // how sample_count was rounded, empty when it was not
   // <scene> embree_use_robust_intersections: the CPU's Embree traversal in its robust mode
-  // (watertight: no ray passes between the triangles of a shared edge). Mitsuba's default is
-  // false; twinray's is true (scenes/README.md).
+  // (RTC_SCENE_FLAG_ROBUST, against rays that pass between the triangles of a shared edge).
+  // Mitsuba's default is false; twinray's is true (scenes/README.md).
   bool robust_intersections = true;
 };
 
