@@ -1,5 +1,7 @@
 #include "scenes/scene_digest.h"
 
+#include <cstdint>
+
 #include "io/fnv1a.h"
 
 namespace tr {
@@ -21,6 +23,8 @@ std::string scene_digest(const Scene& scene) {
   f.add_vector(b.uvs);
   f.add_vector(b.indices);
   f.add_vector(b.attributes);
+  const std::uint8_t robust = scene.robust_intersections ? 1u : 0u;
+  f.add(&robust, sizeof robust);
   return f.hex();
 }
 

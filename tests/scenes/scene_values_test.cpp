@@ -11,6 +11,7 @@
 #include "core/material_slots.h"
 #include "core/transform.h"
 #include "scene_test_files.h"
+#include "scenes/scene_digest.h"
 
 namespace tr {
 namespace {
@@ -128,6 +129,10 @@ TEST(SceneValues, SceneAccelerationParameters) {
       "<integer name=\"kd_retract_bad_splits\" value=\"1\"/>"
       "<integer name=\"kd_exact_primitive_threshold\" value=\"65536\"/>");
   EXPECT_TRUE(kd.robust_intersections);
+  // A checkpoint of one traversal mode does not resume in the other (render/checkpoint.h).
+  Scene fast = load_text("<boolean name=\"embree_use_robust_intersections\" value=\"false\"/>");
+  EXPECT_NE(scene_digest(fast), scene_digest(load_text("")));
+  EXPECT_EQ(scene_digest(kd), scene_digest(load_text("")));
 }
 
 TEST(SceneValues, TransformsComposeInDocumentOrder) {
