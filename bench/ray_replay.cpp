@@ -91,6 +91,23 @@ struct Chunk {
   const RayRecord* end;
 };
 
+// A closest-hit answer (hit or not, t, primitive) against the record: with kCheck 1 when it
+// differs (t bit for bit), else a value the caller keeps so that the work is not optimized away.
+template <bool kCheck>
+std::uint64_t closest_answer(const RayRecord& r, bool hit, float t, std::uint32_t primitive) {
+  if (!kCheck) return hit ? primitive : 0u;
+  bool same = hit == (r.shape != tr::NO_INDEX);
+  if (same && hit) same = std::memcmp(&t, &r.t, sizeof(float)) == 0 && primitive == r.primitive;
+  return same ? 0u : 1u;
+}
+
+// The same for a shadow query's answer.
+template <bool kCheck>
+std::uint64_t shadow_answer(const RayRecord& r, bool occluded) {
+  if (!kCheck) return occluded ? 1u : 0u;
+  return occluded == (r.shape != 0u) ? 0u : 1u;
+}
+
 // Traces [c.begin, c.end) as EmbreeScene::intersect / occluded do; with kCheck,
 // returns how many answers differ from the recorded ones (t bit for bit, primitive, hit or
 // miss; occluded or not), else a value the caller keeps so that the work is not optimized away.
@@ -103,25 +120,12 @@ std::uint64_t replay(RTCScene scene, const Chunk& c) {
     if (r->query == kClosest) {
       RTCRayHit rh = tr::embree_ray_hit(r->ray);
       rtcIntersect1(scene, &context, &rh);
-      const bool hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-      if (kCheck) {
-        const bool recorded_hit = r->shape != tr::NO_INDEX;
-        bool same = hit == recorded_hit;
-        if (same && hit)
-          same =
-              std::memcmp(&rh.ray.tfar, &r->t, sizeof(float)) == 0 && rh.hit.primID == r->primitive;
-        result += same ? 0u : 1u;
-      } else {
-        result += hit ? rh.hit.primID : 0u;
-      }
+      result += closest_answer<kCheck>(*r, rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, rh.ray.tfar,
+                                       rh.hit.primID);
     } else {
       RTCRay ray = tr::embree_ray(r->ray);
       rtcOccluded1(scene, &context, &ray);
-      const bool occluded = ray.tfar < 0.0f;
-      if (kCheck)
-        result += occluded == (r->shape != 0u) ? 0u : 1u;
-      else
-        result += occluded ? 1u : 0u;
+      result += shadow_answer<kCheck>(*r, ray.tfar < 0.0f);
     }
   }
   return result;
@@ -185,30 +189,16 @@ std::uint64_t replay_packets(RTCScene scene, const std::vector<const RayRecord*>
         rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
       }
       Packet<N>::intersect(valid, scene, &context, &rh);
-      for (int i = 0; i < lanes; ++i) {
-        const RayRecord& r = *rays[first + i];
-        const bool hit = rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
-        if (kCheck) {
-          bool same = hit == (r.shape != tr::NO_INDEX);
-          if (same && hit)
-            same = std::memcmp(&rh.ray.tfar[i], &r.t, sizeof(float)) == 0 &&
-                   rh.hit.primID[i] == r.primitive;
-          result += same ? 0u : 1u;
-        } else {
-          result += hit ? rh.hit.primID[i] : 0u;
-        }
-      }
+      for (int i = 0; i < lanes; ++i)
+        result +=
+            closest_answer<kCheck>(*rays[first + i], rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID,
+                                   rh.ray.tfar[i], rh.hit.primID[i]);
     } else {
       alignas(64) typename Packet<N>::RayN ray;
       for (int i = 0; i < lanes; ++i) set_lane(ray, i, rays[first + i]->ray);
       Packet<N>::occluded(valid, scene, &context, &ray);
-      for (int i = 0; i < lanes; ++i) {
-        const bool occluded = ray.tfar[i] < 0.0f;
-        if (kCheck)
-          result += occluded == (rays[first + i]->shape != 0u) ? 0u : 1u;
-        else
-          result += occluded ? 1u : 0u;
-      }
+      for (int i = 0; i < lanes; ++i)
+        result += shadow_answer<kCheck>(*rays[first + i], ray.tfar[i] < 0.0f);
     }
   }
   return result;
@@ -264,6 +254,15 @@ std::uint64_t replay_all_packets(RTCScene scene,
         return sum;
       },
       [](std::uint64_t a, std::uint64_t b) { return a + b; });
+}
+
+// replay_all_packets for packets of n (4, 8 or 16) rays.
+template <bool kCheck>
+std::uint64_t packet_replay(std::uint32_t n, RTCScene scene,
+                            const std::vector<std::vector<const RayRecord*>>& streams) {
+  if (n == 4) return replay_all_packets<4, kCheck>(scene, streams);
+  if (n == 8) return replay_all_packets<8, kCheck>(scene, streams);
+  return replay_all_packets<16, kCheck>(scene, streams);
 }
 
 template <bool kCheck>
@@ -473,18 +472,10 @@ int run(const Config& config) {
     rtcGetSceneBounds(rtc, &bounds);
     for (bool sorted : {false, true}) {
       const auto streams = packet_streams(chunks, sorted, bounds);
-      std::uint64_t (*check)(RTCScene, const std::vector<std::vector<const RayRecord*>>&) =
-          config.packets == 4   ? replay_all_packets<4, true>
-          : config.packets == 8 ? replay_all_packets<8, true>
-                                : replay_all_packets<16, true>;
-      std::uint64_t (*timed)(RTCScene, const std::vector<std::vector<const RayRecord*>>&) =
-          config.packets == 4   ? replay_all_packets<4, false>
-          : config.packets == 8 ? replay_all_packets<8, false>
-                                : replay_all_packets<16, false>;
-      const std::uint64_t differ = check(rtc, streams);
+      const std::uint64_t differ = packet_replay<true>(config.packets, rtc, streams);
       packet_mismatches += differ;
       Stopwatch packet_watch;
-      const std::uint64_t kept = timed(rtc, streams);
+      const std::uint64_t kept = packet_replay<false>(config.packets, rtc, streams);
       const std::string name = "packets of " + std::to_string(config.packets);
       row(sorted ? "  sorted" : "packets", packet_watch.elapsed(),
           "(" + name + (sorted ? ", sorted by octant and origin" : ", in recorded order") + "; " +

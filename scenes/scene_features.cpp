@@ -10,7 +10,8 @@ SceneFeatures scene_features(const SceneBuffers& scene) {
   SceneFeatures f;
   // Textures that are only tables read texel by texel, never evaluated as textures: a
   // roughplastic's precomputed terms (core/bsdf/roughplastic.h) and an envmap's texels
-  // (core/emitters/envmap.h). The loader makes each for its one material or emitter.
+  // (core/emitters/envmap.h). The loader makes them for these alone (roughplastic materials
+  // alike share theirs), so no other slot refers to them.
   std::vector<bool> table(scene.textures.size(), false);
   for (const Material& m : scene.materials) {
     f.bsdf_types |= 1u << m.type;
