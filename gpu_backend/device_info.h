@@ -1,11 +1,11 @@
 // Physical devices and what the ray-tracing backend needs from them.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "gpu_backend/vulkan_api.h"
 
 namespace tr {
 

@@ -1,10 +1,10 @@
 // Errors of the Vulkan backend: one-line messages, thrown, never a crash.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <stdexcept>
 #include <string>
+
+#include "gpu_backend/vulkan_api.h"
 
 namespace tr {
 

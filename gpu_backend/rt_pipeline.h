@@ -7,9 +7,8 @@
 // stage is specialized with the scene's feature masks (shaders/features.glsl).
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include "gpu_backend/vk_device.h"
+#include "gpu_backend/vulkan_api.h"
 #include "scenes/scene_features.h"
 
 namespace tr {

@@ -3,12 +3,11 @@
 // addresses.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <functional>
 
 #include "gpu_backend/device_info.h"
 #include "gpu_backend/vk_instance.h"
+#include "gpu_backend/vulkan_api.h"
 
 namespace tr {
 

@@ -57,6 +57,7 @@ bool validation_requested() {
 }
 
 VulkanInstance::VulkanInstance() {
+  load_vulkan();
   const bool validation = validation_requested();
   if (validation && !layer_available(kValidationLayer))
     throw GpuError(std::string("TWINRAY_VK_VALIDATION=1 but the Vulkan layer ") + kValidationLayer +

@@ -3,11 +3,11 @@
 // GpuError at the next check point, so a render that provokes one fails loudly.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <mutex>
 #include <string>
 #include <vector>
+
+#include "gpu_backend/vulkan_api.h"
 
 namespace tr {
 

@@ -2,8 +2,6 @@
 // invocation per query: the device half of validation/device_batch (README.md).
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -13,6 +11,7 @@
 
 #include "gpu_backend/vk_device.h"
 #include "gpu_backend/vk_instance.h"
+#include "gpu_backend/vulkan_api.h"
 
 namespace tr::device_batch {
 

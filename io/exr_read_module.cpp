@@ -1,19 +1,19 @@
-// OpenEXR files through the Imf library (OpenEXR 3.1).
+// OpenEXR files read through the Imf library (OpenEXR 3.1), built as a module that twinray
+// loads on the first EXR it reads (io/exr_read.cpp): the C++ library and its Iex and Imath
+// hold about 1.1 MiB of resident pages in every process that maps them, and most renders read
+// no EXR. Writing goes through OpenEXR's C core (io/exr_write.cpp).
+#include "io/exr_read_module.h"
+
 #include <Iex.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
-#include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
-#include <half.h>
 
 #include <algorithm>
 #include <array>
 #include <string_view>
-
-#include "io/image.h"
-#include "io/image_formats.h"
 
 namespace tr {
 
@@ -55,9 +55,13 @@ std::vector<ChannelOrder> ordered_channels(const Imf::ChannelList& list) {
   return order;
 }
 
-}  // namespace
+// What is wrong with an image the library reads.
+struct ExrError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
-Samples read_exr_samples(const std::string& path, const HeaderCheck& check) try {
+// Throws what the C++ library throws, ExrError, or what `check` throws.
+Samples read_exr(const std::string& path, const HeaderCheck& check) {
   Imf::InputFile file(path.c_str());
   const Imf::Header& header = file.header();
   const Imath::Box2i data = header.dataWindow();
@@ -67,18 +71,20 @@ Samples read_exr_samples(const std::string& path, const HeaderCheck& check) try 
   s.cropped = data != header.displayWindow();
   std::vector<ChannelOrder> channels = ordered_channels(header.channels());
   s.channels = int(channels.size());
-  if (s.width <= 0 || s.height <= 0 || s.channels == 0) fail_image(path, "image has no pixels");
+  if (s.width <= 0 || s.height <= 0 || s.channels == 0) throw ExrError("image has no pixels");
   s.floating = true;
   for (const ChannelOrder& c : channels) {
     const Imf::Channel& channel = header.channels()[c.name];
     if (channel.xSampling != 1 || channel.ySampling != 1)
-      fail_image(path, "channel " + c.name + " is subsampled (not supported)");
+      throw ExrError("channel " + c.name + " is subsampled (not supported)");
     s.bytes_per_channel = std::max(s.bytes_per_channel, channel.type == Imf::HALF ? 2 : 4);
     s.channel_names.push_back(c.name);
   }
+  // "type" (scanlineimage, tiledimage, ...), which OpenEXR's C core writes in every file, is the
+  // part's layout, not metadata.
   for (auto it = header.begin(); it != header.end(); ++it)
     if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
-      s.metadata[it.name()] = text->value();
+      if (std::string_view(it.name()) != "type") s.metadata[it.name()] = text->value();
   check(s.width, s.height, s.channels);
 
   s.values.resize(size_t(s.width) * s.height * s.channels);
@@ -94,46 +100,21 @@ Samples read_exr_samples(const std::string& path, const HeaderCheck& check) try 
   file.setFrameBuffer(frame);
   file.readPixels(data.min.y, data.max.y);
   return s;
-} catch (const Iex::BaseExc& e) {
-  fail_image(path, e.what());
 }
 
-void write_exr_file(const std::string& path, const std::string& file, const ImageRows& img,
-                    const std::vector<std::string>& names, bool half) try {
-  Imf::Header header(img.width, img.height);
-  header.compression() = Imf::ZIP_COMPRESSION;
-  for (const std::string& name : names)
-    header.channels().insert(name, Imf::Channel(half ? Imf::HALF : Imf::FLOAT));
-  for (const auto& [key, value] : img.metadata) header.insert(key, Imf::StringAttribute(value));
-  Imf::OutputFile out(file.c_str(), header);
-  // A strip of the scanlines that ZIP compresses together (16) is developed, converted and
-  // handed to OpenEXR at a time. OpenEXR converts pixel types when reading only: half channels
-  // are written from halves.
-  const int strip = std::min(img.height, 16);
-  const size_t row_values = size_t(img.width) * img.channels;
-  std::vector<float> values(row_values * strip);
-  std::vector<Imath::half> halves(half ? values.size() : 0);
-  const size_t sample = half ? sizeof(Imath::half) : sizeof(float);
-  const size_t x_stride = sample * img.channels;
-  const size_t y_stride = x_stride * img.width;
-  for (int y0 = 0; y0 < img.height; y0 += strip) {
-    const int rows = std::min(strip, img.height - y0);
-    for (int r = 0; r < rows; ++r) img.row(y0 + r, values.data() + r * row_values);
-    std::copy(values.begin(), values.begin() + std::ptrdiff_t(halves.size()), halves.begin());
-    // Slices address pixel (x, y) at base + x * x_stride + y * y_stride: base is the strip's
-    // buffer moved back by y0 rows.
-    const char* buffer = half ? reinterpret_cast<const char*>(halves.data())
-                              : reinterpret_cast<const char*>(values.data());
-    char* base = const_cast<char*>(buffer) - std::ptrdiff_t(y0) * std::ptrdiff_t(y_stride);
-    Imf::FrameBuffer frame;
-    for (int c = 0; c < img.channels; ++c)
-      frame.insert(names[c], Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * sample, x_stride,
-                                        y_stride));
-    out.setFrameBuffer(frame);
-    out.writePixels(rows);
-  }
-} catch (const Iex::BaseExc& e) {
-  fail_image(path, e.what());
-}
+}  // namespace
 
 }  // namespace tr
+
+extern "C" __attribute__((visibility("default"))) bool twinray_read_exr(
+    const char* path, const tr::HeaderCheck* check, tr::Samples* out, std::string* error) {
+  try {
+    *out = tr::read_exr(path, *check);
+    return true;
+  } catch (const Iex::BaseExc& e) {
+    *error = e.what();
+  } catch (const tr::ExrError& e) {
+    *error = e.what();
+  }
+  return false;
+}
