@@ -37,8 +37,10 @@ void TR_CONCAT(pixel_kernel_, TR_CPU_KERNEL)(const EmbreeScene& accel, uvec2 pix
                                              ThreadCounts& counts) {
   const Integrator it = scene_globals().integrator;
   const uint pass_size = film.pass_size;
+  double negatives = film.negatives_before(index);
   for (uint i = first; i < first + count; ++i) {
     PathState s = integrator_begin(pixel, i, seed);
+    const double positives = double(i) - negatives;
     bool camera_hit_pending = false;
     Hit camera_hit;
     if (it.aov_count > 0u) {
@@ -47,7 +49,7 @@ void TR_CONCAT(pixel_kernel_, TR_CPU_KERNEL)(const EmbreeScene& accel, uvec2 pix
       camera_hit_pending = true;
       AovPoint a = aov_point(s.ray, camera_hit);
       for (uint k = 0; k < it.aov_count; ++k)
-        film.add(film.aovs, index * it.aov_count + k, integrator_negative(s),
+        film.add(film.aovs, index * it.aov_count + k, positives, integrator_negative(s),
                  aov_value(scene_aov_type(k), a));
     }
     while (integrator_alive(s)) {
@@ -65,7 +67,8 @@ void TR_CONCAT(pixel_kernel_, TR_CPU_KERNEL)(const EmbreeScene& accel, uvec2 pix
       ++counts.rejected;
       L = vec3(0.0f);
     }
-    film.add(film.pixels, index, integrator_negative(s), L);
+    film.add(film.pixels, index, positives, integrator_negative(s), L);
+    if (integrator_negative(s)) negatives += 1.0;
     if (pass_size > 0u && (i + 1u) % pass_size == 0u) {
       end_pass(film.pixels.passes(index));
       for (uint k = 0; k < it.aov_count; ++k) end_pass(film.aovs.passes(index * it.aov_count + k));

@@ -19,14 +19,23 @@ struct ThreadCounts {
 // One render() call's film: accumulator i of `pixels` or `aovs` gets its samples, and the
 // negative groups are allocated when the first negative sample arrives (a filter with negative
 // lobes, core/film.h), by one thread while the others wait (std::call_once), so that a film
-// without negative samples holds none.
+// without negative samples holds none. Threads adding positive samples meanwhile do not read
+// the negative groups: each counts its pixel's negative samples itself (negatives_before), and
+// a pixel's AOV accumulators get the pixel's samples with the same signs.
 struct FilmTarget {
   FilmMomentArray& pixels;
   FilmMomentArray& aovs;
   std::uint32_t pass_size;
+  bool had_negative;  // pixels.has_negative() before the render() call's threads started
   std::once_flag negative_once;
 
-  void add(FilmMomentArray& a, std::size_t i, bool negative, const glm::vec3& L) {
+  // The negative samples that pixel `index` held when the render() call began.
+  double negatives_before(std::size_t index) {
+    return had_negative ? pixels.negative(index).n : 0.0;
+  }
+
+  // Adds sample L to accumulator i, which holds `positives` positive samples before it.
+  void add(FilmMomentArray& a, std::size_t i, double positives, bool negative, const glm::vec3& L) {
     if (negative) {
       std::call_once(negative_once, [this] {
         pixels.keep_negative();
@@ -34,7 +43,9 @@ struct FilmTarget {
       });
       add_sample(a.negative(i), L);
     } else {
-      add_sample(a.positive(i), L);
+      SampleGroup g = a.positive_counted(i, positives);
+      add_sample(g, L);
+      a.set_positive(i, g);
     }
     if (pass_size > 0u) add_to_pass(a.passes(i), negative ? -1.0 : 1.0, 1.0, L);
   }

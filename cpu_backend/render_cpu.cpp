@@ -63,7 +63,7 @@ class CpuRenderer final : public Renderer {
     if (film.pass_size > 0 && !film.pixels.has_passes())
       throw std::logic_error("render_cpu: a film of pass size " + std::to_string(film.pass_size) +
                              " without pass moments (render/film_state.h empty_film)");
-    FilmTarget target{film.pixels, film.aovs, film.pass_size, {}};
+    FilmTarget target{film.pixels, film.aovs, film.pass_size, film.pixels.has_negative(), {}};
     tbb::parallel_for(
         tbb::blocked_range2d<uint>(0, film.height, kTileSize, 0, film.width, kTileSize),
         [&](const tbb::blocked_range2d<uint>& tile) {

@@ -19,7 +19,9 @@ void merge_batches(const PixelBatch* batch, std::uint32_t first, std::uint32_t n
   for (std::size_t p = 0; p < pixels.size(); ++p) {
     const double negative = static_cast<double>(batch[p].negative);
     const double positive = static_cast<double>(n_b) - negative;
-    merge_batch(pixels.positive(p), positive, batch[p].mean, batch[p].m2);
+    SampleGroup g = pixels.positive(p, first);
+    merge_batch(g, positive, batch[p].mean, batch[p].m2);
+    pixels.set_positive(p, g);
     if (pixels.has_negative())
       merge_batch(pixels.negative(p), negative, batch[p].mean_negative, batch[p].m2_negative);
     if (pass_size == 0) continue;
@@ -39,7 +41,7 @@ void MomentAccumulator::develop(std::vector<double>& mean, std::vector<double>& 
   mean.assign(3 * pixels_.size(), 0.0);
   variance.assign(3 * pixels_.size(), 0.0);
   for (std::size_t p = 0; p < pixels_.size(); ++p)
-    tr::develop(pixels_[p], &mean[3 * p], &variance[3 * p]);
+    tr::develop(pixels_.at(p, static_cast<std::uint32_t>(count_)), &mean[3 * p], &variance[3 * p]);
 }
 
 }  // namespace tr

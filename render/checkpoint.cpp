@@ -76,9 +76,11 @@ void write_checkpoint(const std::string& path, const RenderIdentity& id, const F
   {
     std::ofstream out(tmp.name(), std::ios::binary | std::ios::trunc);
     out << header(id, film.samples);
-    // Absent parts (render/film_state.h FilmMomentArray) as the zeros they stand for.
+    // Absent parts (render/film_state.h FilmMomentArray) as the zeros they stand for, and the
+    // positive samples' count, which the film does not store.
     for (const FilmMomentArray* moments : {&film.pixels, &film.aovs})
-      for (std::size_t i = 0; i < moments->size(); ++i) write_moments(out, (*moments)[i]);
+      for (std::size_t i = 0; i < moments->size(); ++i)
+        write_moments(out, moments->at(i, film.samples));
     const RenderStats& s = film.stats;
     out.write(reinterpret_cast<const char*>(&s.seconds), sizeof s.seconds);
     out.write(reinterpret_cast<const char*>(&s.samples), sizeof s.samples);
@@ -132,6 +134,9 @@ FilmState read_checkpoint(const std::string& path, const RenderIdentity& expecte
     for (std::size_t i = 0; i < moments->size(); ++i) {
       FilmMoments m;
       read_moments(in, m);
+      if (in && m.positive.n + m.negative.n != double(samples))
+        throw CheckpointError(path + ": damaged (a pixel's sample counts do not add up to " +
+                              std::to_string(samples) + ")");
       moments->set(i, m);
     }
   RenderStats& s = film.stats;

@@ -29,7 +29,7 @@ inline double estimated_relative_error(const FilmState& film) {
   double sum = 0.0;
   for (std::size_t p = 0; p < film.pixels.size(); ++p) {
     double mean[3], variance[3];
-    develop_estimate(film.pixels[p], film.pass_size, mean, variance);
+    develop_estimate(film.pixels.at(p, film.samples), film.pass_size, mean, variance);
     for (int c = 0; c < 3; ++c)
       sum += variance[c] / (double(film.samples) * (mean[c] * mean[c] + 1e-2));
   }

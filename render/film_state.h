@@ -18,9 +18,12 @@ namespace tr {
 // The moments of `size()` accumulators (one a pixel, or aov_count a pixel), each part of
 // FilmMoments in its own array, so that a film holds only the parts its render fills: the
 // negative samples' groups once a sample of a filter with negative lobes arrives
-// (keep_negative()), the passes' only with a correlated sampler. For independent samples and
-// filters without negative lobes that is 56 bytes an accumulator instead of 200. An absent part
-// reads as FilmMoments' zeros, which is what it would hold.
+// (keep_negative()), the passes' only with a correlated sampler. The positive samples' count is
+// not stored: every sample of an accumulator is positive or negative, so it is the
+// accumulator's sample count (the sample index the renderer is at, or FilmState::samples) less
+// the negative count. For independent samples and filters without negative lobes that is 48
+// bytes an accumulator instead of 200. An absent part reads as FilmMoments' zeros, which is what
+// it would hold.
 class FilmMomentArray {
  public:
   FilmMomentArray() = default;
@@ -36,32 +39,59 @@ class FilmMomentArray {
     if (negative_.empty()) negative_.resize(positive_.size());
   }
 
-  SampleGroup& positive(std::size_t i) { return positive_[i]; }
+  // The positive samples of accumulator i, which holds `samples` samples in all.
+  SampleGroup positive(std::size_t i, std::uint32_t samples) const {
+    return positive_counted(i, double(samples) - (has_negative() ? negative_[i].n : 0.0));
+  }
+  // The same, given their count n (for a renderer whose threads must not read the negative
+  // groups while another allocates them).
+  SampleGroup positive_counted(std::size_t i, double n) const {
+    SampleGroup g;
+    g.n = n;
+    for (int c = 0; c < 3; ++c) {
+      g.mean[c] = positive_[i].mean[c];
+      g.m2[c] = positive_[i].m2[c];
+    }
+    return g;
+  }
+  // Stores g's moments (its count is implied, above).
+  void set_positive(std::size_t i, const SampleGroup& g) {
+    for (int c = 0; c < 3; ++c) {
+      positive_[i].mean[c] = g.mean[c];
+      positive_[i].m2[c] = g.m2[c];
+    }
+  }
   // Only after keep_negative() (has_negative()).
   SampleGroup& negative(std::size_t i) { return negative_[i]; }
   // Only with passes (has_passes()).
   PassMoments& passes(std::size_t i) { return passes_[i]; }
 
-  // Accumulator i whole; const so that assigning to it does not compile (use set).
-  const FilmMoments operator[](std::size_t i) const {
+  // Accumulator i whole, when it holds `samples` samples.
+  FilmMoments at(std::size_t i, std::uint32_t samples) const {
     FilmMoments m;
-    m.positive = positive_[i];
     if (has_negative()) m.negative = negative_[i];
+    m.positive = positive(i, samples);
     if (has_passes()) m.passes = passes_[i];
     return m;
   }
 
-  // Stores m as accumulator i: its negative group allocates the negative ones unless it is all
-  // zero; its pass moments are dropped without passes, where nothing reads them
-  // (render/error_estimate.h).
+  // Stores m as accumulator i (m.positive.n + m.negative.n samples): its negative group
+  // allocates the negative ones unless it is all zero; its pass moments are dropped without
+  // passes, where nothing reads them (render/error_estimate.h).
   void set(std::size_t i, const FilmMoments& m) {
-    positive_[i] = m.positive;
+    set_positive(i, m.positive);
     if (!has_negative() && !is_zero(m.negative)) keep_negative();
     if (has_negative()) negative_[i] = m.negative;
     if (has_passes()) passes_[i] = m.passes;
   }
 
  private:
+  // A SampleGroup without its count.
+  struct Moments {
+    double mean[3] = {0.0, 0.0, 0.0};
+    double m2[3] = {0.0, 0.0, 0.0};
+  };
+
   static bool is_zero(const SampleGroup& g) {
     if (g.n != 0.0) return false;
     for (int c = 0; c < 3; ++c)
@@ -69,7 +99,7 @@ class FilmMomentArray {
     return true;
   }
 
-  std::vector<SampleGroup> positive_;
+  std::vector<Moments> positive_;
   std::vector<SampleGroup> negative_;  // empty: no negative sample yet
   std::vector<PassMoments> passes_;    // empty without passes
 };
@@ -108,7 +138,8 @@ inline void develop_film(const FilmState& film, std::vector<double>& mean,
   mean.assign(3 * film.pixels.size(), 0.0);
   variance.assign(3 * film.pixels.size(), 0.0);
   for (std::size_t p = 0; p < film.pixels.size(); ++p)
-    develop_estimate(film.pixels[p], film.pass_size, &mean[3 * p], &variance[3 * p]);
+    develop_estimate(film.pixels.at(p, film.samples), film.pass_size, &mean[3 * p],
+                     &variance[3 * p]);
 }
 
 // The same for the AOVs: 3 * aov_count values per pixel, in FilmState::aovs order.
@@ -117,7 +148,7 @@ inline void develop_aovs(const FilmState& film, std::vector<double>& mean,
   mean.assign(3 * film.aovs.size(), 0.0);
   variance.assign(3 * film.aovs.size(), 0.0);
   for (std::size_t a = 0; a < film.aovs.size(); ++a)
-    develop_estimate(film.aovs[a], film.pass_size, &mean[3 * a], &variance[3 * a]);
+    develop_estimate(film.aovs.at(a, film.samples), film.pass_size, &mean[3 * a], &variance[3 * a]);
 }
 
 }  // namespace tr

@@ -72,10 +72,10 @@ Develop from_vectors(const std::vector<double>& mean, const std::vector<double>&
   };
 }
 
-Develop from_film(const FilmMomentArray& moments, std::uint32_t pass_size) {
-  return [&moments, pass_size](std::size_t i, int v, double out[3]) {
+Develop from_film(const FilmMomentArray& moments, std::uint32_t samples, std::uint32_t pass_size) {
+  return [&moments, samples, pass_size](std::size_t i, int v, double out[3]) {
     double mean[3], variance[3];
-    develop_estimate(moments[i], pass_size, mean, variance);
+    develop_estimate(moments.at(i, samples), pass_size, mean, variance);
     for (int c = 0; c < 3; ++c) out[c] = v == 0 ? mean[c] : variance[c];
   };
 }
@@ -101,8 +101,9 @@ void write_result(const RenderResult& result, const OutputPaths& paths,
 void write_film(const FilmState& film, const RenderResult& header, const OutputPaths& paths,
                 const std::map<std::string, std::string>& extra, bool half,
                 const std::vector<std::vector<std::string>>& aov_channels) {
-  write_developed(header, from_film(film.pixels, film.pass_size),
-                  from_film(film.aovs, film.pass_size), paths, extra, half, aov_channels);
+  write_developed(header, from_film(film.pixels, film.samples, film.pass_size),
+                  from_film(film.aovs, film.samples, film.pass_size), paths, extra, half,
+                  aov_channels);
 }
 
 }  // namespace tr

@@ -139,7 +139,8 @@ TEST(ErrorEstimate, NamesWhatTheVarianceIs) {
 }
 
 // render/film_state.h: a film's accumulators keep the negative groups from the first one that
-// has negative samples on, the pass moments only with passes, and read absent parts as zeros.
+// has negative samples on, the pass moments only with passes, and read absent parts as zeros;
+// the positive count is the sample count less the negative one.
 TEST(FilmMomentArray, HoldsOnlyThePartsItIsGiven) {
   FilmMomentArray without_passes(3, false);
   EXPECT_FALSE(without_passes.has_passes());
@@ -147,17 +148,18 @@ TEST(FilmMomentArray, HoldsOnlyThePartsItIsGiven) {
   const FilmMoments positive = accumulate(draw(8, 0.0, 8), 4);
   without_passes.set(1, positive);
   EXPECT_FALSE(without_passes.has_negative());
-  EXPECT_EQ(without_passes[1].positive.n, 8.0);
-  EXPECT_EQ(without_passes[1].passes.values.n, 0.0);  // dropped: nothing reads them
+  EXPECT_EQ(without_passes.at(1, 8).positive.n, 8.0);
+  EXPECT_EQ(without_passes.at(1, 8).passes.values.n, 0.0);  // dropped: nothing reads them
 
   FilmMomentArray with_passes(3, true);
   const FilmMoments signed_samples = accumulate(draw(64, 0.5, 9), 4);
   ASSERT_GT(signed_samples.negative.n, 0.0);
   with_passes.set(2, signed_samples);
   EXPECT_TRUE(with_passes.has_negative());
-  const FilmMoments back = with_passes[2];
+  const FilmMoments back = with_passes.at(2, 64);
   EXPECT_EQ(std::memcmp(&back, &signed_samples, sizeof back), 0);
-  EXPECT_EQ(with_passes[0].negative.n, 0.0);
+  EXPECT_EQ(with_passes.at(0, 64).negative.n, 0.0);
+  EXPECT_EQ(with_passes.at(0, 64).positive.n, 64.0);
 }
 
 // render --target-error trusts a correlated sampler's estimate from kMinErrorPasses passes on.

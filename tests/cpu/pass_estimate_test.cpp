@@ -52,7 +52,7 @@ void expect_same_moments(const FilmState& a, const FilmState& b) {
   ASSERT_EQ(a.pixels.size(), b.pixels.size());
   ASSERT_EQ(a.pixels.has_negative(), b.pixels.has_negative());
   for (std::size_t p = 0; p < a.pixels.size(); ++p) {
-    const FilmMoments x = a.pixels[p], y = b.pixels[p];
+    const FilmMoments x = a.pixels.at(p, a.samples), y = b.pixels.at(p, b.samples);
     ASSERT_EQ(std::memcmp(&x, &y, sizeof(FilmMoments)), 0) << "pixel " << p;
   }
 }
@@ -63,7 +63,7 @@ TEST(PassEstimate, SplitRendersKeepThePassMomentsBitForBit) {
     const Scene scene = cornell_box(sampler, 16);
     const FilmState whole = render_ranges(scene, {64}, 3);
     ASSERT_EQ(whole.pass_size, 16u) << sampler_name(sampler);
-    EXPECT_EQ(whole.pixels[0].passes.values.n, 4.0);
+    EXPECT_EQ(whole.pixels.at(0, whole.samples).passes.values.n, 4.0);
     expect_same_moments(whole, render_ranges(scene, {5, 11, 27, 1, 20}, 3));
   }
 }
@@ -71,14 +71,14 @@ TEST(PassEstimate, SplitRendersKeepThePassMomentsBitForBit) {
 TEST(PassEstimate, IndependentHasNoPasses) {
   const FilmState film = render_ranges(cornell_box(SAMPLER_INDEPENDENT, 16), {32}, 1);
   EXPECT_EQ(film.pass_size, 0u);
-  EXPECT_EQ(film.pixels[0].passes.values.n, 0.0);
+  EXPECT_EQ(film.pixels.at(0, film.samples).passes.values.n, 0.0);
   // Nor does the film hold any, or negative groups for its gaussian filter (FilmMomentArray).
   EXPECT_FALSE(film.pixels.has_passes());
   EXPECT_FALSE(film.pixels.has_negative());
 }
 
 // A checkpoint taken inside a pass resumes to the unsplit render's moments; one of format
-// version 1 (without the pass moments) is refused.
+// version 1 (without the pass moments), or one whose pixel counts disagree, is refused.
 TEST(PassEstimate, CheckpointKeepsThePassMoments) {
   const Scene scene = cornell_box(SAMPLER_ZSOBOL, 16);
   const std::filesystem::path path =
@@ -97,8 +97,8 @@ TEST(PassEstimate, CheckpointKeepsThePassMoments) {
   renderer->render(40, film, {});
   write_checkpoint(path.string(), id, film);
   FilmState resumed = read_checkpoint(path.string(), id);
-  EXPECT_EQ(resumed.pixels[7].passes.values.n, 2.0);
-  EXPECT_NE(resumed.pixels[7].passes.signs, 0.0);
+  EXPECT_EQ(resumed.pixels.at(7, resumed.samples).passes.values.n, 2.0);
+  EXPECT_NE(resumed.pixels.at(7, resumed.samples).passes.signs, 0.0);
   expect_same_moments(film, resumed);
   renderer->render(24, resumed, {});
   expect_same_moments(render_ranges(scene, {64}, 5), resumed);
@@ -106,13 +106,23 @@ TEST(PassEstimate, CheckpointKeepsThePassMoments) {
   std::ifstream in(path, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   in.close();
-  bytes.replace(0, bytes.find('\n'), "twinray checkpoint 1");
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-  try {
-    read_checkpoint(path.string(), id);
-    ADD_FAILURE() << "a version 1 checkpoint was read";
-  } catch (const CheckpointError& e) {
-    EXPECT_NE(std::string(e.what()).find("format version 1"), std::string::npos) << e.what();
+  // The film stores no positive count (render/film_state.h): a pixel whose counts do not add up
+  // to the checkpoint's samples is damage.
+  std::string miscounted = bytes;
+  const double wrong_count = 39.0;
+  miscounted.replace(miscounted.find("end\n") + 4, sizeof wrong_count,
+                     reinterpret_cast<const char*>(&wrong_count), sizeof wrong_count);
+  std::string version_1 = bytes;
+  version_1.replace(0, version_1.find('\n'), "twinray checkpoint 1");
+  for (const auto& [damaged, message] :
+       {std::pair{miscounted, "do not add up to 40"}, std::pair{version_1, "format version 1"}}) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << damaged;
+    try {
+      read_checkpoint(path.string(), id);
+      ADD_FAILURE() << "a checkpoint was read, expected: " << message;
+    } catch (const CheckpointError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
   }
   std::filesystem::remove(path);
 }
@@ -170,7 +180,7 @@ TEST(PassEstimate, EstimatedVarianceOfTheMeanMatchesTheVarianceOverSeeds) {
     ASSERT_EQ(completed_passes(film.pass_size, film.samples), kPasses);
     std::vector<double> v, e, s;
     for (std::size_t p = 0; p < film.pixels.size(); ++p) {
-      const FilmMoments m = film.pixels[p];
+      const FilmMoments m = film.pixels.at(p, film.samples);
       double mean[3], variance[3], ps_mean[3], ps_variance[3];
       develop_estimate(m, film.pass_size, mean, variance);
       develop(m, ps_mean, ps_variance);

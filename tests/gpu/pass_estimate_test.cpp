@@ -31,7 +31,7 @@ void expect_same_moments(const FilmState& a, const FilmState& b) {
   ASSERT_EQ(a.pixels.size(), b.pixels.size());
   ASSERT_EQ(a.pixels.has_negative(), b.pixels.has_negative());
   for (std::size_t p = 0; p < a.pixels.size(); ++p) {
-    const FilmMoments x = a.pixels[p], y = b.pixels[p];
+    const FilmMoments x = a.pixels.at(p, a.samples), y = b.pixels.at(p, b.samples);
     ASSERT_EQ(std::memcmp(&x, &y, sizeof(FilmMoments)), 0) << p;
   }
 }
@@ -53,7 +53,7 @@ TEST(GpuPassEstimate, SplitOnBatchesKeepsThePassMomentsBitForBit) {
   ASSERT_LT(g, 512u);
   const FilmState whole = render_ranges(*gpu, {1024});
   const FilmState split = render_ranges(*gpu, {g, 512 - g, 512});
-  ASSERT_EQ(whole.pixels[0].passes.values.n, 2.0);
+  ASSERT_EQ(whole.pixels.at(0, whole.samples).passes.values.n, 2.0);
   expect_same_moments(whole, split);
 
   // The CPU draws the same numbers: the estimates agree up to float rounding.
@@ -80,7 +80,7 @@ TEST(GpuPassEstimate, BatchesStopAtPassEnds) {
   ASSERT_EQ(renderer->granularity(), 256u) << "the batch no longer depends on the pass";
   const FilmState whole = render_ranges(*renderer, {289 * 2});
   const FilmState split = render_ranges(*renderer, {256, 289 * 2 - 256});
-  EXPECT_EQ(whole.pixels[0].passes.values.n, 2.0);
+  EXPECT_EQ(whole.pixels.at(0, whole.samples).passes.values.n, 2.0);
   expect_same_moments(whole, split);
 }
 

@@ -135,7 +135,12 @@ TEST(GpuVarianceMerge, BatchesInsidePassesGiveThePassValues) {
     merge_batches(&batch, first, n, pass_size, gpu);
     first += n;
   }
-  const PassMoments g = gpu[0].passes;
+  const FilmMoments merged = gpu.at(0, first);
+  EXPECT_EQ(merged.positive.n, cpu.positive.n);
+  EXPECT_EQ(merged.negative.n, cpu.negative.n);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(merged.positive.mean[c], cpu.positive.mean[c], 1e-5 * cpu.positive.mean[c]) << c;
+  const PassMoments g = merged.passes;
   ASSERT_EQ(g.values.n, 4.0);
   ASSERT_EQ(cpu.passes.values.n, 4.0);
   for (int c = 0; c < 3; ++c) {
