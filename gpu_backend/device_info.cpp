@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "gpu_backend/gpu_error.h"
+#include "render/render.h"
 
 namespace tr {
 
@@ -138,13 +139,13 @@ std::string describe(const DeviceInfo& d) {
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
                                 const std::string& selector) {
   const std::string hint = "; use --backend cpu";
-  if (devices.empty()) throw GpuError("no Vulkan device found" + hint);
+  if (devices.empty()) throw BackendUnavailable("no Vulkan device found" + hint);
   if (selector.empty()) {
     for (const DeviceInfo& d : devices)
       if (d.usable()) return d;
     std::string why;
     for (const DeviceInfo& d : devices) why += (why.empty() ? "" : "; ") + describe(d);
-    throw GpuError("no Vulkan device supports ray tracing (" + why + ")" + hint);
+    throw BackendUnavailable("no Vulkan device supports ray tracing (" + why + ")" + hint);
   }
   const DeviceInfo* chosen = nullptr;
   bool numeric = std::all_of(selector.begin(), selector.end(),
@@ -152,8 +153,8 @@ const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
   if (numeric) {
     unsigned long index = std::stoul(selector);
     if (index >= devices.size())
-      throw GpuError("no Vulkan device with index " + selector +
-                     " (devices: " + device_list(devices) + ")" + hint);
+      throw BackendUnavailable("no Vulkan device with index " + selector +
+                               " (devices: " + device_list(devices) + ")" + hint);
     chosen = &devices[index];
   } else {
     for (const DeviceInfo& d : devices)
@@ -162,10 +163,10 @@ const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
         if (!chosen) chosen = &d;
       }
     if (!chosen)
-      throw GpuError("no Vulkan device matches '" + selector +
-                     "' (devices: " + device_list(devices) + ")" + hint);
+      throw BackendUnavailable("no Vulkan device matches '" + selector +
+                               "' (devices: " + device_list(devices) + ")" + hint);
   }
-  if (!chosen->usable()) throw GpuError("Vulkan device " + describe(*chosen) + hint);
+  if (!chosen->usable()) throw BackendUnavailable("Vulkan device " + describe(*chosen) + hint);
   return *chosen;
 }
 

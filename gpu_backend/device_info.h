@@ -27,8 +27,8 @@ const std::vector<const char*>& required_device_extensions();
 std::vector<DeviceInfo> query_devices(VkInstance instance);
 
 // Picks a device: "" the first usable one, a decimal index, or a case-insensitive name
-// substring. Throws GpuError naming what is missing (and suggesting --backend cpu) when the
-// choice is not usable or none matches.
+// substring. Throws BackendUnavailable naming what is missing (and suggesting --backend cpu) when
+// the choice is not usable or none matches.
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
                                 const std::string& selector);
 

@@ -31,7 +31,7 @@ int devices_command(int argc, char** argv) {
       return 1;
     }
     return 0;
-  } catch (const GpuError& e) {
+  } catch (const std::runtime_error& e) {  // GpuError, BackendUnavailable
     std::cerr << "twinray devices: " << e.what() << "\n";
     return 1;
   }

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "gpu_backend/gpu_error.h"
+#include "render/render.h"
 
 namespace tr {
 
@@ -86,7 +87,7 @@ VulkanInstance::VulkanInstance() {
   info.ppEnabledExtensionNames = extensions.data();
   VkResult r = vkCreateInstance(&info, nullptr, &instance_);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
-    throw GpuError(
+    throw BackendUnavailable(
         "no Vulkan 1.3 driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
         "use --backend cpu");
   vk_check(r, "vkCreateInstance");

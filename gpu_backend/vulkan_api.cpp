@@ -5,7 +5,7 @@
 #include <mutex>
 #include <string>
 
-#include "gpu_backend/gpu_error.h"
+#include "render/render.h"
 
 #define TWINRAY_DEFINE_VULKAN_FUNCTION(name) PFN_##name name = nullptr;
 TWINRAY_VULKAN_FUNCTIONS(TWINRAY_DEFINE_VULKAN_FUNCTION)
@@ -35,7 +35,7 @@ void load_vulkan() {
   static std::once_flag once;
   static std::string failure;
   std::call_once(once, [] { failure = load_functions(); });
-  if (!failure.empty()) throw GpuError(failure + "; use --backend cpu");
+  if (!failure.empty()) throw BackendUnavailable(failure + "; use --backend cpu");
 }
 
 }  // namespace tr

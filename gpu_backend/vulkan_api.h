@@ -77,8 +77,8 @@ TWINRAY_VULKAN_FUNCTIONS(TWINRAY_DECLARE_VULKAN_FUNCTION)
 
 namespace tr {
 
-// Opens the loader and sets every pointer above, once (thread-safe). Throws GpuError when the
-// loader or one of the functions is missing.
+// Opens the loader and sets every pointer above, once (thread-safe). Throws BackendUnavailable
+// (render/render.h) when the loader or one of the functions is missing.
 void load_vulkan();
 
 }  // namespace tr

@@ -59,7 +59,7 @@ ProbeVariant variant_of(const std::string& family) {
   std::unique_ptr<ProbeDevice> device;                                                            \
   try {                                                                                           \
     device = std::make_unique<ProbeDevice>();                                                     \
-  } catch (const GpuError& e) {                                                                   \
+  } catch (const std::runtime_error& e) {                                                         \
     FAIL() << "the GPU BSDF suite needs a usable Vulkan device (lavapipe will do): " << e.what(); \
   }                                                                                               \
   compile_seconds = device->build(variant);                                                       \

@@ -16,7 +16,7 @@ namespace {
 std::string message_of(const std::function<void()>& f) {
   try {
     f();
-  } catch (const GpuError& e) {
+  } catch (const BackendUnavailable& e) {
     return e.what();
   }
   return "";
