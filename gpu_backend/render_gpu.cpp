@@ -28,6 +28,15 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// The features the pipeline is compiled for (GpuTuning::features).
+SceneFeatures pipeline_features(const Scene& scene, const GpuTuning& tuning) {
+  const SceneFeatures own = scene_features(scene.buffers);
+  if (!tuning.features) return own;
+  if (!features_cover(*tuning.features, own))
+    throw GpuError("the pipeline's features do not cover the scene's");
+  return *tuning.features;
+}
+
 // Samples per pixel of each dispatch. The float Welford inside a batch rounds differently
 // for other batch boundaries, so the schedule depends only on the device type and the image
 // size, never on measured times: the same seed gives the same image on every run. A dispatch
@@ -61,8 +70,7 @@ class GpuRenderer final : public Renderer {
     phase = Clock::now();
     pipeline_ = std::make_unique<RayTracingPipeline>(
         *device_, device_info_.cpu ? raygen.cpu : raygen.gpu,
-        device_info_.cpu ? raygen.cpu_bytes : raygen.gpu_bytes,
-        tuning.specialize ? scene_features(scene.buffers) : all_features());
+        device_info_.cpu ? raygen.cpu_bytes : raygen.gpu_bytes, pipeline_features(scene, tuning));
     timings_.pipeline_seconds = seconds_since(phase);
     phase = Clock::now();
     batch_bytes_ = pixels_ * sizeof(PixelBatch);

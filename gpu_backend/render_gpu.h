@@ -4,10 +4,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "render/render.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
+#include "scenes/scene_features.h"
 
 namespace tr {
 
@@ -24,7 +26,9 @@ std::unique_ptr<Renderer> make_gpu_renderer(const Scene& scene, const RenderOpti
 
 // Knobs and timings of the GPU backend beyond RenderOptions, for tests and measurements.
 struct GpuTuning {
-  bool specialize = true;  // false: the all-features pipeline
+  // The features the pipeline is specialized for; unset: the scene's own (scene_features),
+  // all_features(): the all-features pipeline. They must cover the scene's.
+  std::optional<SceneFeatures> features;
 };
 
 struct GpuTimings {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The samplers issue's benchmark: relMSE against render time for every sampler on (a)
-# bench/samplers/direct_lit.xml (128 x 128, direct light and a soft shadow) and (b) the
-# Cornell box at max_depth 6 (64 x 64), against an `independent` reference of REF_SPP samples
+# bench/samplers/direct_lit.xml (128 x 128, direct light and a soft shadow), (b) twinray's default
+# Cornell box (mirror and glass spheres) at max_depth 6 (64 x 64) and (c) Mitsuba's Cornell box
+# (../shared/perf/mitsuba-cbox/cbox-rgb.xml, its own max_depth 6; 64 x 64), against an `independent` reference of REF_SPP samples
 # per pixel (seed 1000: independent of every measured render). The reference's own error adds
 # to every relMSE measured (about relMSE(independent, 1024 spp) / 64 at the defaults), so the
 # gains of the better samplers are understated, never overstated. Each rung of `twinray converge`, 64 to
@@ -9,7 +10,7 @@
 #
 # usage: bench/samplers/run.sh [OUT]      (default OUT: bench-samplers)
 # env:   TWINRAY (build/app/twinray), REF_SPP (65536), REPEATS (8), THREADS (all cores),
-#        MAX_SPP (1024; smaller for a quick try), SCENES ("direct_lit cornell_box"),
+#        MAX_SPP (1024; smaller for a quick try), SCENES ("direct_lit cornell_box mitsuba_cbox"),
 #        SAMPLERS (all: "independent stratified multijitter orthogonal ldsampler zsobol sobol")
 # Writes OUT/<scene>/{reference.exr, convergence.csv, convergence.svg, time_to_error.csv} and
 # prints relMSE at 64 and 1024 spp per sampler (mean +- standard error, seconds per render);
@@ -56,12 +57,15 @@ bench() {  # bench NAME SCENE DEFINES...
     "$dir/estimate/convergence.csv"
 }
 
-for name in ${SCENES:-direct_lit cornell_box}; do
+for name in ${SCENES:-direct_lit cornell_box mitsuba_cbox}; do
   case $name in
     direct_lit) bench direct_lit "$root/bench/samplers/direct_lit.xml" ;;
     cornell_box)
       bench cornell_box "$root/examples/scenes/cornell-box/cornell_box.xml" -D max_depth=6 -D width=64 \
         -D height=64
+      ;;
+    mitsuba_cbox)
+      bench mitsuba_cbox "$root/../shared/perf/mitsuba-cbox/cbox-rgb.xml" -D res=64
       ;;
     *) echo "run.sh: unknown scene '$name'" >&2 && exit 2 ;;
   esac
