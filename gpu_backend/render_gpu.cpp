@@ -69,8 +69,9 @@ class GpuRenderer final : public Renderer {
     timings_.setup_seconds = seconds_since(phase);
     phase = Clock::now();
     pipeline_ = std::make_unique<RayTracingPipeline>(
-        *device_, device_info_.cpu ? raygen.cpu : raygen.gpu,
-        device_info_.cpu ? raygen.cpu_bytes : raygen.gpu_bytes, pipeline_features(scene, tuning));
+        *device_, device_info_.cpu || tuning.keep_loops ? raygen.cpu : raygen.gpu,
+        device_info_.cpu || tuning.keep_loops ? raygen.cpu_bytes : raygen.gpu_bytes,
+        pipeline_features(scene, tuning));
     timings_.pipeline_seconds = seconds_since(phase);
     phase = Clock::now();
     batch_bytes_ = pixels_ * sizeof(PixelBatch);

@@ -29,6 +29,8 @@ struct GpuTuning {
   // The features the pipeline is specialized for; unset: the scene's own (scene_features),
   // all_features(): the all-features pipeline. They must cover the scene's.
   std::optional<SceneFeatures> features;
+  // The ray-generation shader's build that keeps its loops (RaygenShader::cpu) on every device.
+  bool keep_loops = false;
 };
 
 struct GpuTimings {

@@ -1,10 +1,12 @@
 // Measurement tool (not a test): renders a scene on the GPU backend and prints the time of
 // each phase and the throughput, for the specialized and the all-features pipeline.
 //   gpu_bench SCENE.xml|SCENE.bin [--spp N] [--all-features | --all-features-but GROUPS]
-//             [--device D] [-D name=value]... [--save DUMP.bin]
+//             [--without-bsdfs TYPES] [--keep-loops] [--device D] [-D name=value]...
+//             [--save DUMP.bin]
 // --all-features-but bsdf,aov (say): every feature, but the scene's own BSDF types and AOVs —
 // what one group of features costs the all-features pipeline. --without-bsdfs 10,11 (say) then
-// drops BSDF types (core/scene_types.h's BSDF_* numbers) from the pipeline's.
+// drops BSDF types (core/scene_types.h's BSDF_* numbers) from the pipeline's. --keep-loops takes
+// the shader's build for CPU devices (loops not unrolled) on a GPU too.
 // Built without the loader (TWINRAY_BENCH_NO_LOADER), it reads only scene dumps
 // (scene_dump.h), for machines that lack the loader's libraries.
 #include <cstdio>
@@ -84,6 +86,8 @@ int main(int argc, char** argv) {
     } else if (a == "--all-features-but" && i + 1 < argc) {
       all = true;
       but = argv[++i];
+    } else if (a == "--keep-loops") {
+      tuning.keep_loops = true;
     } else if (a == "--without-bsdfs" && i + 1 < argc) {
       without_bsdfs = argv[++i];
     } else if (a == "--device" && i + 1 < argc) {
@@ -126,6 +130,7 @@ int main(int argc, char** argv) {
     std::string pipeline = all ? "all-features" : "specialized";
     if (!but.empty()) pipeline += " but " + but;
     if (!without_bsdfs.empty()) pipeline += " without BSDFs " + without_bsdfs;
+    if (tuning.keep_loops) pipeline += ", loops kept";
     tr::GpuTimings t;
     tr::RenderResult r = tr::render_with_raygen(scene, options, tr::renderer_raygen(), tuning, &t);
     // Throughput over all dispatches, and after the first one, which may include the
