@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "gpu_backend/gpu_error.h"
 #include "gpu_backend/render_gpu.h"
+#include "scenes/scene_features.h"
 #include "test_scene.h"
 
 namespace tr {
@@ -57,6 +59,18 @@ TEST(GpuRender, SameSeedGivesTheSameImageOnEveryRun) {
     ASSERT_EQ(a.variance[i], b.variance[i]) << i;
   }
   EXPECT_EQ(a.stats.rays, b.stats.rays);
+}
+
+// A pipeline compiled for fewer features than the scene has would drop code the scene needs:
+// GpuTuning::features must cover the scene's, or the render fails before compiling.
+TEST(GpuRender, PipelineFeaturesMustCoverTheScene) {
+  Scene scene = test::probe_scene(8, 8);
+  RenderOptions options;
+  options.spp = 1;
+  GpuTuning tuning;
+  tuning.features = scene_features(scene.buffers);
+  tuning.features->bsdf_types = 0u;
+  EXPECT_THROW(render_with_raygen(scene, options, renderer_raygen(), tuning), GpuError);
 }
 
 }  // namespace
