@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The samplers issue's benchmark: relMSE against render time for every sampler on (a)
-# bench/samplers/direct_lit.xml (128 x 128, direct light and a soft shadow), (b) twinray's default
-# Cornell box (mirror and glass spheres) at max_depth 6 (64 x 64) and (c) Mitsuba's Cornell box
-# (../shared/perf/mitsuba-cbox/cbox-rgb.xml, its own max_depth 6; 64 x 64), against an `independent` reference of REF_SPP samples
-# per pixel (seed 1000: independent of every measured render). The reference's own error adds
-# to every relMSE measured (about relMSE(independent, 1024 spp) / 64 at the defaults), so the
-# gains of the better samplers are understated, never overstated. Each rung of `twinray converge`, 64 to
-# 1024 spp, is the mean of REPEATS renders with distinct seeds, with its standard error.
+# bench/samplers/direct_lit.xml (128 x 128, direct light and a soft shadow), (b) twinray's
+# default Cornell box (mirror and glass spheres) at max_depth 6 (64 x 64) and (c) Mitsuba's
+# Cornell box (../shared/perf/mitsuba-cbox/cbox-rgb.xml, its own max_depth 6; 64 x 64), against
+# an `independent` reference of REF_SPP samples per pixel (seed 1000: independent of every
+# measured render). The reference's own error adds to every relMSE measured (about
+# relMSE(independent, 1024 spp) / 64 at the defaults), so the gains of the better samplers are
+# understated, never overstated. Each rung of `twinray converge`, 64 to 1024 spp, is the mean of
+# REPEATS renders with distinct seeds, with its standard error.
 #
 # usage: bench/samplers/run.sh [OUT]      (default OUT: bench-samplers)
 # env:   TWINRAY (build/app/twinray), REF_SPP (65536), REPEATS (8), THREADS (all cores),
