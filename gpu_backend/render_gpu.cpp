@@ -68,10 +68,10 @@ class GpuRenderer final : public Renderer {
     device_ = std::make_unique<VulkanDevice>(*instance_, device_info_);
     timings_.setup_seconds = seconds_since(phase);
     phase = Clock::now();
-    pipeline_ = std::make_unique<RayTracingPipeline>(
-        *device_, device_info_.cpu || tuning.keep_loops ? raygen.cpu : raygen.gpu,
-        device_info_.cpu || tuning.keep_loops ? raygen.cpu_bytes : raygen.gpu_bytes,
-        pipeline_features(scene, tuning));
+    const bool loops = device_info_.cpu || tuning.keep_loops;
+    pipeline_ = std::make_unique<RayTracingPipeline>(*device_, loops ? raygen.cpu : raygen.gpu,
+                                                     loops ? raygen.cpu_bytes : raygen.gpu_bytes,
+                                                     pipeline_features(scene, tuning));
     timings_.pipeline_seconds = seconds_since(phase);
     phase = Clock::now();
     batch_bytes_ = pixels_ * sizeof(PixelBatch);

@@ -9,12 +9,16 @@
 // the shader's build for CPU devices (loops not unrolled) on a GPU too.
 // Built without the loader (TWINRAY_BENCH_NO_LOADER), it reads only scene dumps
 // (scene_dump.h), for machines that lack the loader's libraries.
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gpu_backend/render_gpu.h"
 #include "scene_dump.h"
@@ -25,34 +29,48 @@
 
 namespace {
 
-// Every feature but the comma-separated groups of `groups`, which keep the scene's own.
-tr::SceneFeatures all_features_but(const tr::SceneFeatures& own, const std::string& groups) {
+// The feature groups --all-features-but names, each a mask of SceneFeatures.
+struct FeatureGroup {
+  const char* name;
+  uint32_t tr::SceneFeatures::*mask;
+};
+constexpr FeatureGroup kGroups[] = {
+    {"bsdf", &tr::SceneFeatures::bsdf_types},
+    {"emitter", &tr::SceneFeatures::emitter_types},
+    {"shape", &tr::SceneFeatures::shape_types},
+    {"texture", &tr::SceneFeatures::texture_types},
+    {"material", &tr::SceneFeatures::material_flags},
+    {"integrator", &tr::SceneFeatures::integrator_types},
+    {"aov", &tr::SceneFeatures::aov_types},
+    {"sampler", &tr::SceneFeatures::sampler_types},
+    {"textured", &tr::SceneFeatures::textured_slots},
+    {"selection", &tr::SceneFeatures::emitter_selections},
+};
+
+// The comma-separated items of `list`.
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+  return items;
+}
+
+// Every feature but the groups named in `groups`, which keep the scene's own, and without the
+// BSDF types numbered in `without_bsdfs` (core/scene_types.h's BSDF_*).
+tr::SceneFeatures pipeline_features(const tr::SceneFeatures& own, const std::string& groups,
+                                    const std::string& without_bsdfs) {
   tr::SceneFeatures f = tr::all_features();
-  std::stringstream list(groups);
-  std::string g;
-  while (std::getline(list, g, ',')) {
-    if (g == "bsdf")
-      f.bsdf_types = own.bsdf_types;
-    else if (g == "emitter")
-      f.emitter_types = own.emitter_types;
-    else if (g == "shape")
-      f.shape_types = own.shape_types;
-    else if (g == "texture")
-      f.texture_types = own.texture_types;
-    else if (g == "material")
-      f.material_flags = own.material_flags;
-    else if (g == "integrator")
-      f.integrator_types = own.integrator_types;
-    else if (g == "aov")
-      f.aov_types = own.aov_types;
-    else if (g == "sampler")
-      f.sampler_types = own.sampler_types;
-    else if (g == "textured")
-      f.textured_slots = own.textured_slots;
-    else if (g == "selection")
-      f.emitter_selections = own.emitter_selections;
-    else
-      throw std::runtime_error("unknown feature group '" + g + "'");
+  for (const std::string& g : split(groups)) {
+    const FeatureGroup* group = std::find_if(std::begin(kGroups), std::end(kGroups),
+                                             [&](const FeatureGroup& k) { return g == k.name; });
+    if (group == std::end(kGroups)) throw std::runtime_error("unknown feature group '" + g + "'");
+    f.*group->mask = own.*group->mask;
+  }
+  for (const std::string& t : split(without_bsdfs)) {
+    if (t.empty() || t.size() > 2 || t.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoul(t) >= 32)
+      throw std::runtime_error("--without-bsdfs: '" + t + "' is no BSDF type number (0 to 31)");
+    f.bsdf_types &= ~(1u << std::stoul(t));
   }
   return f;
 }
@@ -120,13 +138,8 @@ int main(int argc, char** argv) {
       tr::test::save_scene_dump(scene, save);
       return 0;
     }
-    if (all) {
-      tuning.features = all_features_but(tr::scene_features(scene.buffers), but);
-      std::stringstream list(without_bsdfs);
-      std::string type;
-      while (std::getline(list, type, ','))
-        tuning.features->bsdf_types &= ~(1u << std::stoul(type));
-    }
+    if (all)
+      tuning.features = pipeline_features(tr::scene_features(scene.buffers), but, without_bsdfs);
     std::string pipeline = all ? "all-features" : "specialized";
     if (!but.empty()) pipeline += " but " + but;
     if (!without_bsdfs.empty()) pipeline += " without BSDFs " + without_bsdfs;
