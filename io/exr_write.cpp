@@ -7,6 +7,7 @@
 #include <OpenEXR/openexr.h>
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,23 @@ void keep_message(exr_const_context_t context, exr_result_t, const char* message
   void* user = nullptr;
   if (exr_get_user_data(context, &user) == EXR_ERR_SUCCESS && user)
     *static_cast<std::string*>(user) = message;
+}
+
+// OpenEXR 3.1's ZIP encoder keeps the zlib bytes of a chunk they do not shorten only when they
+// are longer than the packed chunk; at exactly its length a reader takes them for an uncompressed
+// chunk and decodes garbage (OpenEXR issue 2306, fixed in 3.4.8). This compress step runs the
+// library's and, in that case, stores the packed chunk itself, as the fixed encoder does.
+struct CompressStep {
+  exr_result_t (*library)(exr_encode_pipeline_t*) = nullptr;
+};
+
+exr_result_t compress_unambiguously(exr_encode_pipeline_t* encoder) {
+  const auto* step = static_cast<const CompressStep*>(encoder->encoding_user_data);
+  exr_result_t result = step->library(encoder);
+  if (result == EXR_ERR_SUCCESS && encoder->compressed_bytes == encoder->packed_bytes &&
+      encoder->compressed_buffer != encoder->packed_buffer)
+    std::memcpy(encoder->compressed_buffer, encoder->packed_buffer, encoder->packed_bytes);
+  return result;
 }
 
 class ExrWriter {
@@ -106,6 +124,7 @@ void write_exr_file(const std::string& path, const std::string& file, const Imag
   const int sample = half ? int(sizeof(Imath::half)) : int(sizeof(float));
   const auto* buffer = half ? reinterpret_cast<const uint8_t*>(halves.data())
                             : reinterpret_cast<const uint8_t*>(values.data());
+  CompressStep zip_step;
   for (int y0 = 0; y0 < img.height; y0 += strip) {
     const int rows = std::min(strip, img.height - y0);
     for (int r = 0; r < rows; ++r) img.row(y0 + r, values.data() + r * row_values);
@@ -121,7 +140,14 @@ void write_exr_file(const std::string& path, const std::string& file, const Imag
       channel.user_data_type = uint16_t(type);
       channel.user_bytes_per_element = int16_t(sample);
     }
-    if (y0 == 0) writer.check(exr_encoding_choose_default_routines(ctx, part, &encoder));
+    if (y0 == 0) {
+      writer.check(exr_encoding_choose_default_routines(ctx, part, &encoder));
+      if (encoder.compress_fn) {
+        zip_step.library = encoder.compress_fn;
+        encoder.compress_fn = compress_unambiguously;
+        encoder.encoding_user_data = &zip_step;
+      }
+    }
     writer.check(exr_encoding_run(ctx, part, &encoder));
   }
   writer.finish();
