@@ -47,9 +47,20 @@ INLINE bool sphere_cone(IN(Shape) s, vec3 p, OUT(float) one_minus_cos_max) {
 INLINE void sample_shape_area(IN(Emitter) e, IN(Shape) s, INOUT(Rng) rng, OUT(vec3) p,
                               OUT(vec3) n) {
   if (TR_HAS_SHAPE(SHAPE_MESH) && s.type == SHAPE_MESH) {
+    // As Mitsuba 3's Mesh::sample_position, one 2D number picks the triangle (its x) and,
+    // rescaled, places the point in it: the point set a correlated sampler stratifies in 2D
+    // stays stratified over the whole shape, not over each triangle apart. Meshes of more
+    // triangles than ALIAS_REUSE_MAX_COUNT take a second number for the point.
     float pmf;
-    uint tri = alias_sample(e.alias_offset, e.alias_count, rng_next_2d(rng), pmf);
-    vec2 b = square_to_uniform_triangle(rng_next_2d(rng));
+    vec2 u = rng_next_2d(rng);
+    uint tri;
+    if (e.alias_count <= ALIAS_REUSE_MAX_COUNT) {
+      tri = alias_sample_reuse(e.alias_offset, e.alias_count, u.x, pmf, u.x);
+    } else {
+      tri = alias_sample(e.alias_offset, e.alias_count, u, pmf);
+      u = rng_next_2d(rng);
+    }
+    vec2 b = square_to_uniform_triangle(u);
     uint base = s.first_index + 3u * tri;
     uint i0 = s.first_vertex + scene_index(base);
     uint i1 = s.first_vertex + scene_index(base + 1u);

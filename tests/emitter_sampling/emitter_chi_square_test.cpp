@@ -37,6 +37,29 @@ struct EmitterCase {
 
 const std::string kMuseum = std::string(TWINRAY_MITSUBA_TEXTURES) + "/museum.exr";
 
+std::filesystem::path case_directory() {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / "twinray_emitter_tests";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// Writes an OBJ of the square [-1, 1]^2 in z = 0 cut into nx x ny cells of two triangles, each
+// cell's vertices of its own (the quads of a grid facing +z); returns its path.
+std::string grid_obj(int nx, int ny) {
+  std::filesystem::path file =
+      case_directory() / ("grid_" + std::to_string(nx) + "x" + std::to_string(ny) + ".obj");
+  std::ofstream obj(file);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      obj << "v " << -1.0 + 2.0 * i / nx << ' ' << -1.0 + 2.0 * j / ny << " 0\n";
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      int v = j * (nx + 1) + i + 1;
+      obj << "f " << v << ' ' << v + 1 << ' ' << v + nx + 2 << " " << v + nx + 1 << "\n";
+    }
+  return file.string();
+}
+
 // Emitters of every kind with a position and an environment, weighted by sampling_weight.
 const std::string kMixture =
     R"(<shape type="sphere"><point name="center" x="0.5" y="0.3" z="0.4"/>
@@ -63,6 +86,13 @@ const std::vector<EmitterCase>& cases() {
           <rotate x="1" y="1" angle="35"/><translate x="0.8" z="0.3"/></transform>
           <emitter type="area"/></shape>)",
        {0.0, 0.0, 0.0}},
+      // More triangles than ALIAS_REUSE_MAX_COUNT (core/alias.h): the triangle and the point
+      // take a 2D number each, where the rectangle and the cube reuse one.
+      {"grid_of_288_triangles",
+       R"(<shape type="obj"><string name="filename" value=")" + grid_obj(12, 12) +
+           R"("/><transform name="to_world"><scale x="0.6" y="0.4"/><rotate x="1" angle="-20"/>
+          <translate z="-0.9"/></transform><emitter type="area"/></shape>)",
+       {0.1, 0.1, 0.0}},
       {"sphere_outside",
        R"(<shape type="sphere"><point name="center" x="0.5" y="0.3" z="0.4"/>
           <float name="radius" value="0.3"/><emitter type="area"/></shape>)",
@@ -104,9 +134,7 @@ const std::vector<EmitterCase>& cases() {
 }
 
 Scene load_case(const EmitterCase& c) {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / "twinray_emitter_tests";
-  std::filesystem::create_directories(dir);
-  std::filesystem::path file = dir / (c.name + ".xml");
+  std::filesystem::path file = case_directory() / (c.name + ".xml");
   std::ofstream(file) << "<scene version=\"3.0.0\"><sensor type=\"perspective\"/>" << c.body
                       << "</scene>\n";
   LoadOptions options;

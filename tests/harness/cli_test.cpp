@@ -119,7 +119,8 @@ TEST(ValidateCommand, QuickSuiteOnTheCpuWritesAReportThatRendersWithEveryVerdict
 }
 
 TEST(ValidateCommand, FailsWithExitOneWhenASceneFailsAndStillWritesTheReport) {
-  // A suite whose reference is a different scene's: the render must fail against it.
+  // A suite whose reference is a different scene's: the render must fail against it, its
+  // confirmation render too.
   fs::path dir = scratch("validate_fail");
   fs::path scenes = fs::path(TWINRAY_QUICK_SUITE).parent_path() / "../mitsuba/tests/scenes";
   std::ofstream(dir / "wrong.suite")
@@ -136,6 +137,9 @@ TEST(ValidateCommand, FailsWithExitOneWhenASceneFailsAndStillWritesTheReport) {
   std::printf("%s", out.c_str());
   EXPECT_EQ(status, 1);
   EXPECT_NE(out.find("wrong: FAIL"), std::string::npos);
+  // Its failure was judged again by a confirmation render (4 x 16 spp), which failed too.
+  EXPECT_NE(out.find("CPU vs Mitsuba reference: confirmation, seed"), std::string::npos);
+  EXPECT_NE(out.find("64 spp: FAIL"), std::string::npos);
   EXPECT_NE(out.find("missing: FAIL"), std::string::npos);
   std::string json = slurp(dir / "out/summary.json");
   size_t top_verdict = json.find("\"passed\": false");
