@@ -28,8 +28,9 @@ void keep_message(exr_const_context_t context, exr_result_t, const char* message
 
 // OpenEXR 3.1's ZIP encoder keeps the zlib bytes of a chunk they do not shorten only when they
 // are longer than the packed chunk; at exactly its length a reader takes them for an uncompressed
-// chunk and decodes garbage (OpenEXR issue 2306, fixed in 3.4.8). This compress step runs the
-// library's and, in that case, stores the packed chunk itself, as the fixed encoder does.
+// chunk and decodes garbage (OpenEXR issue 2306, fixed upstream in March 2026 by pull request 2307;
+// Debian 12 has 3.1.5). This compress step runs the library's and, in that case, stores the packed
+// chunk itself, as the fixed encoder does.
 struct CompressStep {
   exr_result_t (*library)(exr_encode_pipeline_t*) = nullptr;
 };
