@@ -25,9 +25,9 @@ AcceptanceResult mitsuba_acceptance(const RgbImage& img, double spp, const RgbIm
 // confirmation render, an independent seed (confirmation_seed) at kConfirmationSppFactor times
 // the samples, where a bias stands twice as many standard errors out; the scene fails only when
 // that render fails too. A right renderer then fails a scene about once in 10^4 runs (0.01 x
-// 0.01) rather than once in 100, so that a suite of some 60 scenes does not fail half the
-// changes of its random numbers; a bias the rule catches at the first render's spp is caught
-// again, more surely, at four times it.
+// 0.01, more where the shared reference's own noise decides both) rather than once in 100, so that
+// a suite of some 60 scenes does not fail half the changes of its random numbers; a bias the rule
+// catches at the first render's spp is caught again, more surely, at four times it.
 constexpr std::uint32_t kConfirmationSppFactor = 4;
 std::uint32_t confirmation_seed(std::uint32_t seed);
 
