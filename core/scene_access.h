@@ -35,10 +35,10 @@ float scene_filter_cdf(uint k);
 // for the same reason.
 uint scene_aov_type(uint i);
 #ifndef __cplusplus
-// Column i of the Sobol generator matrices (core/samplers/sobol_matrices.h), from a buffer: as a
-// constant array indexed in the shader, lavapipe copied all of it into every invocation. The
+// Entry i of the Sobol matrices' nibble table (core/samplers/sobol_matrices.h), from a buffer: as
+// a constant array indexed in the shader, lavapipe copied all of it into every invocation. The
 // host reads the array in place (inline there).
-uint scene_sobol_column(uint i);
+uvec2 scene_sobol_nibble(uint i);
 #endif
 
 TR_NAMESPACE_END

@@ -36,7 +36,8 @@ GpuScene::GpuScene(VulkanDevice& device, const SceneBuffers& scene, VkDescriptor
   buffers_[BINDING_UVS] = upload_vector(device, scene.uvs, storage);
   buffers_[BINDING_INDICES] = upload_vector(device, scene.indices, build_input);
   buffers_[BINDING_ATTRIBUTES] = upload_vector(device, scene.attributes, storage);
-  buffers_[BINDING_SOBOL] = upload_buffer(device, SOBOL_MATRICES, sizeof(SOBOL_MATRICES), storage);
+  buffers_[BINDING_SOBOL] =
+      upload_buffer(device, SOBOL_NIBBLE_TABLE.xy, sizeof(SOBOL_NIBBLE_TABLE.xy), storage);
   GeometryLayout geometry = geometry_layout(scene);
   buffers_[BINDING_GEOMETRY_SHAPES] = upload_vector(device, geometry.table, storage);
   accel_ = std::make_unique<SceneAccel>(device, scene, geometry, buffers_[BINDING_POSITIONS],

@@ -20,7 +20,7 @@ layout(std430, set = 0, binding = BINDING_NORMALS) readonly buffer NormalBuffer 
 layout(std430, set = 0, binding = BINDING_UVS) readonly buffer UvBuffer { vec2 g_uvs[]; };
 layout(std430, set = 0, binding = BINDING_INDICES) readonly buffer IndexBuffer { uint g_indices[]; };
 layout(std430, set = 0, binding = BINDING_ATTRIBUTES) readonly buffer AttributeBuffer { uint g_attributes[]; };
-layout(std430, set = 0, binding = BINDING_SOBOL) readonly buffer SobolBuffer { uint g_sobol_matrices[]; };
+layout(std430, set = 0, binding = BINDING_SOBOL) readonly buffer SobolBuffer { uvec2 g_sobol_nibbles[]; };
 
 SceneGlobals scene_globals() { return g_globals; }
 Material scene_material(uint i) { return g_materials[i]; }
@@ -36,7 +36,7 @@ vec3 scene_normal(uint v) { return g_normals[v].xyz; }
 vec2 scene_uv(uint v) { return g_uvs[v]; }
 uint scene_index(uint i) { return g_indices[i]; }
 uint scene_attribute(uint i) { return g_attributes[i]; }
-uint scene_sobol_column(uint i) { return g_sobol_matrices[i]; }
+uvec2 scene_sobol_nibble(uint i) { return g_sobol_nibbles[i]; }
 float scene_filter_table(uint i) { return g_globals.camera.filter_table[i >> 2u][i & 3u]; }
 uint scene_aov_type(uint i) { return g_globals.integrator.aov_types[i >> 2u][i & 3u]; }
 float scene_filter_cdf(uint k) { return g_globals.camera.filter_cdf[k >> 2u][k & 3u]; }

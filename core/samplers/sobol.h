@@ -32,17 +32,14 @@
 
 TR_NAMESPACE_BEGIN
 
-// Point `index` (below 2^digits) of Sobol dimensions `dimension` and `dimension` + 1, their
-// digits reversed (bit j the 2^-(j+1) digit). A fixed trip count and masks instead of branches:
-// the index's bits are random, so branches on them would be mispredicted half the time.
+// Point `index` (below 2^digits) of Sobol dimensions `dimension` and `dimension` + 1 (even),
+// their digits reversed (bit j the 2^-(j+1) digit): the matrices' product with the index, four
+// bits of the index a lookup (core/samplers/sobol_matrices.h).
 INLINE uvec2 sobol_reversed_bits(uint index, uint dimension, uint digits) {
   uvec2 v = uvec2(0u);
-  uint column = dimension * SOBOL_COLUMNS;
-  for (uint k = 0u; k < digits; ++k) {
-    uint mask = 0u - ((index >> k) & 1u);
-    v.x ^= scene_sobol_column(column + k) & mask;
-    v.y ^= scene_sobol_column(column + SOBOL_COLUMNS + k) & mask;
-  }
+  uint entry = (dimension / 2u) * SOBOL_NIBBLES * 16u;
+  for (uint n = 0u; 4u * n < digits; ++n)
+    v ^= scene_sobol_nibble(entry + 16u * n + ((index >> (4u * n)) & 15u));
   return v;
 }
 

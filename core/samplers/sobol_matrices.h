@@ -18,8 +18,8 @@ TR_NAMESPACE_BEGIN
 const uint SOBOL_DIMENSIONS = 128u;
 const uint SOBOL_COLUMNS = 24u;
 
-// The table lives on the host: core/ reads it through scene_sobol_column, below on the CPU, from
-// the buffer the GPU backend uploads it to in shaders (core/scene_access.h).
+// The tables live on the host: core/ reads the nibble table below through scene_sobol_nibble, in
+// place on the CPU, from the buffer the GPU backend uploads it to in shaders (core/scene_access.h).
 #ifdef __cplusplus
 // clang-format off
 inline constexpr uint SOBOL_MATRICES[SOBOL_DIMENSIONS * SOBOL_COLUMNS] = {
@@ -537,7 +537,39 @@ inline constexpr uint SOBOL_MATRICES[SOBOL_DIMENSIONS * SOBOL_COLUMNS] = {
     0x00045da3u, 0x00087f44u, 0x0011c68cu, 0x0032a551u, 0x00659ee3u, 0x00ead5c3u
 };
 // clang-format on
-inline uint scene_sobol_column(uint i) { return SOBOL_MATRICES[i]; }
+#endif
+
+// The matrices regrouped for the draws (core/samplers/sobol.h), which multiply a pair of them,
+// dimensions 2p and 2p + 1, by an index: entry (p SOBOL_NIBBLES + n) 16 + v holds the XOR of the
+// pair's columns 4n + j over the bits j of v, so the product takes one lookup for every four
+// bits of the index instead of a step for every bit.
+const uint SOBOL_NIBBLES = SOBOL_COLUMNS / 4u;
+const uint SOBOL_NIBBLE_ENTRIES = (SOBOL_DIMENSIONS / 2u) * SOBOL_NIBBLES * 16u;
+
+#ifdef __cplusplus
+struct SobolNibbleTable {
+  uint xy[2u * SOBOL_NIBBLE_ENTRIES];  // entry i: x at 2i, y at 2i + 1 (a std430 uvec2 array)
+};
+
+constexpr SobolNibbleTable make_sobol_nibble_table() {
+  SobolNibbleTable t{};
+  for (uint e = 0u; e < SOBOL_NIBBLE_ENTRIES; ++e) {
+    const uint v = e % 16u, n = (e / 16u) % SOBOL_NIBBLES, pair = e / (16u * SOBOL_NIBBLES);
+    for (uint j = 0u; j < 4u; ++j) {
+      if (((v >> j) & 1u) == 0u) continue;
+      const uint column = 2u * pair * SOBOL_COLUMNS + 4u * n + j;
+      t.xy[2u * e] ^= SOBOL_MATRICES[column];
+      t.xy[2u * e + 1u] ^= SOBOL_MATRICES[column + SOBOL_COLUMNS];
+    }
+  }
+  return t;
+}
+
+inline constexpr SobolNibbleTable SOBOL_NIBBLE_TABLE = make_sobol_nibble_table();
+
+inline uvec2 scene_sobol_nibble(uint i) {
+  return uvec2(SOBOL_NIBBLE_TABLE.xy[2u * i], SOBOL_NIBBLE_TABLE.xy[2u * i + 1u]);
+}
 #endif
 
 TR_NAMESPACE_END
