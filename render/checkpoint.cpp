@@ -1,11 +1,13 @@
 #include "render/checkpoint.h"
 
+#include <elf.h>
+#include <link.h>
+
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
-#include "io/fnv1a.h"
 #include "io/temp_file.h"
 
 namespace tr {
@@ -62,13 +64,41 @@ std::string header(const RenderIdentity& id, std::uint32_t samples) {
 }  // namespace
 
 std::string build_id() {
-  std::ifstream exe("/proc/self/exe", std::ios::binary);
-  if (!exe) throw CheckpointError("/proc/self/exe: cannot read this executable to identify it");
-  Fnv1a f;
-  char buffer[1 << 16];
-  while (exe.read(buffer, sizeof buffer) || exe.gcount() > 0)
-    f.add(buffer, static_cast<size_t>(exe.gcount()));
-  return f.hex();
+  std::string id;
+  // The first object dl_iterate_phdr reports is the executable itself.
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void* out) {
+        for (int i = 0; i < info->dlpi_phnum; ++i) {
+          const ElfW(Phdr)& ph = info->dlpi_phdr[i];
+          if (ph.p_type != PT_NOTE) continue;
+          const std::size_t align = ph.p_align < 4 ? 4 : ph.p_align;
+          const auto padded = [align](std::size_t n) { return (n + align - 1) & ~(align - 1); };
+          const char* note = reinterpret_cast<const char*>(info->dlpi_addr + ph.p_vaddr);
+          const char* end = note + ph.p_memsz;
+          while (note + sizeof(ElfW(Nhdr)) <= end) {
+            const auto* h = reinterpret_cast<const ElfW(Nhdr)*>(note);
+            const char* name = note + sizeof(ElfW(Nhdr));
+            const auto* desc = reinterpret_cast<const unsigned char*>(name + padded(h->n_namesz));
+            if (h->n_type == NT_GNU_BUILD_ID && h->n_namesz == 4 &&
+                std::memcmp(name, "GNU", 4) == 0) {
+              std::string& hex = *static_cast<std::string*>(out);
+              for (std::size_t k = 0; k < h->n_descsz; ++k) {
+                char digits[3];
+                std::snprintf(digits, sizeof digits, "%02x", desc[k]);
+                hex += digits;
+              }
+              return 1;
+            }
+            note = reinterpret_cast<const char*>(desc) + padded(h->n_descsz);
+          }
+        }
+        return 1;
+      },
+      &id);
+  if (id.empty())
+    throw CheckpointError(
+        "this executable has no GNU build ID to identify it (link with --build-id)");
+  return id;
 }
 
 void write_checkpoint(const std::string& path, const RenderIdentity& id, const FilmState& film) {

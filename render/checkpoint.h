@@ -34,7 +34,7 @@ struct RenderIdentity {
   std::uint32_t pass_size = 0;  // Renderer::pass_size() (FilmState::pass_size)
 };
 
-// FNV-1a 64 of this executable's file (/proc/self/exe), 16 hex digits.
+// This executable's GNU build ID (the linker's hash of its contents, .note.gnu.build-id) in hex.
 std::string build_id();
 
 // Throws FileError (io/temp_file.h) when it cannot write.
