@@ -21,7 +21,7 @@
 #define BINDING_GEOMETRY_SHAPES 14  // gpu_backend/scene_accel.h: TLAS geometry -> shape
 #define BINDING_AOVS 15             // Mitsuba `aov`: per pixel and output variable, one PixelBatch
 #define BINDING_ATTRIBUTES 16       // mesh attributes (core/texture.h, eval_mesh_attribute)
-#define BINDING_SOBOL 17        // `sobol`: its generator matrices (core/samplers/sobol_matrices.h)
+#define BINDING_SOBOL 17  // `sobol`: its matrices' nibble table (core/samplers/sobol_matrices.h)
 #define BINDING_LIGHT_NODES 18  // emitter selection by light BVH (core/light_bvh.h)
 #define BINDING_COUNT 19
 

@@ -1,7 +1,7 @@
-// `sobol` (core/samplers/sobol.h): its generator matrices against Joe & Kuo's recurrence, and
-// the net properties its Owen scrambling must keep — every dimension a (0, 1)-sequence, the
-// t-value of every projection the unscrambled sequence's, for draws within the table and
-// past it.
+// `sobol` (core/samplers/sobol.h): its generator matrices against Joe & Kuo's recurrence, their
+// nibble table against the matrices, and the net properties its Owen scrambling must keep — every
+// dimension a (0, 1)-sequence, the t-value of every projection the unscrambled sequence's, for
+// draws within the table and past it.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -60,6 +60,23 @@ TEST(SobolMatrices, AreUpperTriangularWithUnitDiagonal) {
     for (uint k = 0; k < SOBOL_COLUMNS; ++k) {
       const uint column = SOBOL_MATRICES[d * SOBOL_COLUMNS + k];
       EXPECT_EQ(column >> k, 1u) << "dimension " << d << " column " << k;
+    }
+}
+
+// The draws' product of a pair of matrices with an index, by the nibble table, is the XOR of
+// the columns of the index's bits: every pair, indices with bits in every nibble, and an index
+// of a pass of 2^10 taking the 10 digits such a pass uses.
+TEST(SobolMatrices, NibbleTableProductIsTheMatricesProduct) {
+  for (uint d = 0; d < SOBOL_DIMENSIONS; d += 2)
+    for (uint index : {0u, 1u, 5u, 0x9u, 0xf0u, 0x3a5u, 0xabcdeu, 0xffffffu}) {
+      uvec2 expected(0u);
+      for (uint k = 0; k < SOBOL_COLUMNS; ++k)
+        if ((index >> k) & 1u)
+          expected ^= uvec2(SOBOL_MATRICES[d * SOBOL_COLUMNS + k],
+                            SOBOL_MATRICES[(d + 1) * SOBOL_COLUMNS + k]);
+      EXPECT_EQ(sobol_reversed_bits(index, d, SOBOL_COLUMNS), expected)
+          << "dimensions " << d << ", " << d + 1 << ", index " << index;
+      if (index < 1024u) EXPECT_EQ(sobol_reversed_bits(index, d, 10u), expected) << index;
     }
 }
 
