@@ -35,7 +35,9 @@ struct Rng {
   uint seed;
   uint dimension;  // next counter value
   Sampler sampler_params;
-  uint key;  // sobol: the hash of (pixel, pass, seed) its draws' scrambles derive from
+  // sobol: the hash of (pixel, pass, seed) its draws' scrambles derive from; zsobol: the pixel's
+  // Morton code.
+  uint key;
 };
 
 INLINE uvec4 pcg4d(uvec4 v) {
@@ -75,6 +77,10 @@ INLINE Rng rng_init_sampler(uint pixel, uint sample_index, uint seed, Sampler pa
     uint pass = sample_index >> uint(findMSB(params.sample_count));  // a power of 2
     r.key = pcg4d(uvec4(pixel, ~pass, 0xfffffffeu, seed)).x;
   }
+  if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && params.type == SAMPLER_ZSOBOL) {
+    uint y = pixel / params.resolution.x;
+    r.key = zsobol_morton(pixel - y * params.resolution.x, y);
+  }
   return r;
 }
 
@@ -102,15 +108,11 @@ INLINE uint rng_row_permutation(Rng r) {
 
 INLINE uint rng_index_in_pass(Rng r) { return r.sample_index % r.sampler_params.sample_count; }
 
-// zsobol: the key of the current (pass, dimension, seed), shared by every pixel.
+// zsobol: the key of the current (pass, dimension, seed), shared by every pixel; its passes
+// are a power of 2.
 INLINE uvec4 rng_zsobol_key(Rng r) {
-  uint pass = r.sample_index / r.sampler_params.sample_count;
+  uint pass = r.sample_index >> uint(findMSB(r.sampler_params.sample_count));
   return pcg4d(uvec4(0x9e3779b9u, ~pass, r.dimension, r.seed));
-}
-
-INLINE uvec2 rng_pixel_xy(Rng r) {
-  uint y = r.pixel / r.sampler_params.resolution.x;
-  return uvec2(r.pixel - y * r.sampler_params.resolution.x, y);
 }
 
 INLINE float rng_next_1d(INOUT(Rng) r) {
@@ -143,9 +145,9 @@ INLINE float rng_next_1d(INOUT(Rng) r) {
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);
-    uvec2 xy = rng_pixel_xy(r);
     r.dimension += 1u;
-    return zsobol_1d(r.sampler_params, xy.x, xy.y, rng_index_in_pass(r), key);
+    return zsobol_1d(r.sampler_params, r.key, r.sample_index & (r.sampler_params.sample_count - 1u),
+                     key);
   }
   return rng_to_unit_float(rng_next_bits(r).x);
 }
@@ -188,9 +190,9 @@ INLINE vec2 rng_next_2d(INOUT(Rng) r) {
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);
-    uvec2 xy = rng_pixel_xy(r);
     r.dimension += 1u;
-    return zsobol_2d(r.sampler_params, xy.x, xy.y, rng_index_in_pass(r), key);
+    return zsobol_2d(r.sampler_params, r.key, r.sample_index & (r.sampler_params.sample_count - 1u),
+                     key);
   }
   uvec4 h = rng_next_bits(r);
   return vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));

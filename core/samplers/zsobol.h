@@ -62,14 +62,18 @@ INLINE uint zsobol_digit_hash(uvec2 higher, uvec4 key) {
   return lowbias32(((higher.x ^ key.z) * 0x9e3779b9u + key.w) ^ (higher.y * 0x85ebca6bu));
 }
 
-// The Sobol index of `index` (in [0, n)) of pixel (x, y), its digits permuted for the
-// dimension's key (its last two words). Only the low 32 bits are formed: the two Sobol
-// dimensions used resolve 32 bits, the digits above change no coordinate. Each digit's hash
+// The Morton code of pixel (x, y): the bits of x and y interleaved, x's lowest.
+INLINE uint zsobol_morton(uint x, uint y) {
+  return (zsobol_spread_bits(y) << 1u) | zsobol_spread_bits(x);
+}
+
+// The Sobol index of `index` (in [0, n)) of the pixel whose Morton code is `morton`, its digits
+// permuted for the dimension's key (its last two words). Only the low 32 bits are formed: the two
+// Sobol dimensions used resolve 32 bits, the digits above change no coordinate. Each digit's hash
 // depends on the digits above it alone, so the digits are permuted independently of each other
 // (no chain from one to the next).
-INLINE uint zsobol_sobol_index(Sampler s, uint x, uint y, uint index, uvec4 key) {
+INLINE uint zsobol_sobol_index(Sampler s, uint morton, uint index, uvec4 key) {
   uint log2n = uint(findMSB(s.sample_count));
-  uint morton = (zsobol_spread_bits(y) << 1u) | zsobol_spread_bits(x);
   uvec2 m = uvec2((log2n < 32u ? morton << log2n : 0u) | index,
                   log2n == 0u ? 0u : morton >> (32u - log2n));
   uint odd = log2n & 1u;
@@ -88,13 +92,13 @@ INLINE uint zsobol_sobol_index(Sampler s, uint x, uint y, uint index, uvec4 key)
 // key: pcg4d of (dimension, pass, seed) — x and y scramble the two coordinates, z and w choose
 // the digit permutations. The scrambler works on reversed bits: those of the van der Corput
 // point are the index itself.
-INLINE float zsobol_1d(Sampler s, uint x, uint y, uint index, uvec4 key) {
-  uint i = zsobol_sobol_index(s, x, y, index, key);
+INLINE float zsobol_1d(Sampler s, uint morton, uint index, uvec4 key) {
+  uint i = zsobol_sobol_index(s, morton, index, key);
   return ld_bits_to_float(van_der_corput_bits(owen_scramble_reversed(i, key.x)));
 }
 
-INLINE vec2 zsobol_2d(Sampler s, uint x, uint y, uint index, uvec4 key) {
-  uint i = zsobol_sobol_index(s, x, y, index, key);
+INLINE vec2 zsobol_2d(Sampler s, uint morton, uint index, uvec4 key) {
+  uint i = zsobol_sobol_index(s, morton, index, key);
   uint sx = owen_scramble_reversed(i, key.x);
   uint sy = owen_scramble_reversed(sobol_2_reversed_bits(i), key.y);
   return vec2(ld_bits_to_float(van_der_corput_bits(sx)), ld_bits_to_float(van_der_corput_bits(sy)));
