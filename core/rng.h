@@ -108,6 +108,11 @@ INLINE uint rng_row_permutation(Rng r) {
 
 INLINE uint rng_index_in_pass(Rng r) { return r.sample_index % r.sampler_params.sample_count; }
 
+// The same for samplers whose passes are a power of 2 (sobol, zsobol): a mask, not a division.
+INLINE uint rng_index_in_binary_pass(Rng r) {
+  return r.sample_index & (r.sampler_params.sample_count - 1u);
+}
+
 // zsobol: the key of the current (pass, dimension, seed), shared by every pixel; its passes
 // are a power of 2.
 INLINE uvec4 rng_zsobol_key(Rng r) {
@@ -140,14 +145,12 @@ INLINE float rng_next_1d(INOUT(Rng) r) {
   if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && type == SAMPLER_SOBOL) {
     uint draw = r.dimension;
     r.dimension += 1u;
-    return sobol_1d(r.sampler_params, r.sample_index & (r.sampler_params.sample_count - 1u), draw,
-                    r.key);
+    return sobol_1d(r.sampler_params, rng_index_in_binary_pass(r), draw, r.key);
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);
     r.dimension += 1u;
-    return zsobol_1d(r.sampler_params, r.key, r.sample_index & (r.sampler_params.sample_count - 1u),
-                     key);
+    return zsobol_1d(r.sampler_params, r.key, rng_index_in_binary_pass(r), key);
   }
   return rng_to_unit_float(rng_next_bits(r).x);
 }
@@ -185,14 +188,12 @@ INLINE vec2 rng_next_2d(INOUT(Rng) r) {
   if (TR_HAS_SAMPLER(SAMPLER_SOBOL) && type == SAMPLER_SOBOL) {
     uint draw = r.dimension;
     r.dimension += 1u;
-    return sobol_2d(r.sampler_params, r.sample_index & (r.sampler_params.sample_count - 1u), draw,
-                    r.key);
+    return sobol_2d(r.sampler_params, rng_index_in_binary_pass(r), draw, r.key);
   }
   if (TR_HAS_SAMPLER(SAMPLER_ZSOBOL) && type == SAMPLER_ZSOBOL) {
     uvec4 key = rng_zsobol_key(r);
     r.dimension += 1u;
-    return zsobol_2d(r.sampler_params, r.key, r.sample_index & (r.sampler_params.sample_count - 1u),
-                     key);
+    return zsobol_2d(r.sampler_params, r.key, rng_index_in_binary_pass(r), key);
   }
   uvec4 h = rng_next_bits(r);
   return vec2(rng_to_unit_float(h.x), rng_to_unit_float(h.y));
