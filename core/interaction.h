@@ -50,6 +50,20 @@ INLINE Frame shading_frame(vec3 n, vec3 dp_du) {
   return f;
 }
 
+// A point, vector or normal of an instance's space in world space; instance 0, the scene's
+// own shapes, is the identity and skips the arithmetic (which could only flip signs of zero).
+INLINE vec3 instance_point(uint index, IN(Instance) inst, vec3 p) {
+  return index == 0u ? p : transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], p);
+}
+INLINE vec3 instance_vector(uint index, IN(Instance) inst, vec3 v) {
+  return index == 0u ? v
+                     : transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], v);
+}
+INLINE vec3 instance_normal(uint index, IN(Instance) inst, vec3 n) {
+  return index == 0u ? n
+                     : transform_normal(inst.to_object[0], inst.to_object[1], inst.to_object[2], n);
+}
+
 INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
   REF(Shape) shape = scene_shape(hit.shape);
   REF(Instance) inst = scene_instance(hit.instance);
@@ -61,6 +75,10 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
   si.emitter = shape.emitter;
   si.barycentrics = hit.barycentrics;
   si.primitive = hit.primitive;
+  // Mitsuba's partials dp/du, dp/dv: only `bumpmap` reads them (zero where it cannot).
+  bool partials = TR_HAS_BSDF(BSDF_BUMPMAP);
+  si.dp_du = vec3(0.0f);
+  si.dp_dv = vec3(0.0f);
   vec3 n_shading;
   vec3 dp_du = vec3(0.0f);
   if (TR_HAS_SHAPE(SHAPE_MESH) && shape.type == SHAPE_MESH) {
@@ -68,12 +86,9 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
     uint i0 = shape.first_vertex + scene_index(base);
     uint i1 = shape.first_vertex + scene_index(base + 1u);
     uint i2 = shape.first_vertex + scene_index(base + 2u);
-    vec3 p0 =
-        transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i0));
-    vec3 p1 =
-        transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i1));
-    vec3 p2 =
-        transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], scene_position(i2));
+    vec3 p0 = instance_point(hit.instance, inst, scene_position(i0));
+    vec3 p1 = instance_point(hit.instance, inst, scene_position(i1));
+    vec3 p2 = instance_point(hit.instance, inst, scene_position(i2));
     float b1 = hit.barycentrics.x;
     float b2 = hit.barycentrics.y;
     float b0 = 1.0f - b1 - b2;
@@ -83,16 +98,17 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
     n_shading = si.ng;
     if ((shape.flags & SHAPE_HAS_NORMALS) != 0u) {
       vec3 n = b0 * scene_normal(i0) + b1 * scene_normal(i1) + b2 * scene_normal(i2);
-      n = transform_normal(inst.to_object[0], inst.to_object[1], inst.to_object[2], n);
-      n_shading = normalize(n);
+      n_shading = normalize(instance_normal(hit.instance, inst, n));
       if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) n_shading = -n_shading;
     }
     si.uv = vec2(b1, b2);
-    // Without uvs Mitsuba (src/render/mesh.cpp) takes dp/du, dp/dv from coordinate_system of
-    // the face normal before flip_normals.
-    Frame face = frame_from_normal(normalize(cross(p1 - p0, p2 - p0)));
-    si.dp_du = face.s;
-    si.dp_dv = face.t;
+    if (partials) {
+      // Without uvs Mitsuba (src/render/mesh.cpp) takes dp/du, dp/dv from coordinate_system of
+      // the face normal before flip_normals.
+      Frame face = frame_from_normal(normalize(cross(p1 - p0, p2 - p0)));
+      si.dp_du = face.s;
+      si.dp_dv = face.t;
+    }
     if ((shape.flags & SHAPE_HAS_UVS) != 0u) {
       vec2 uv0 = scene_uv(i0);
       vec2 uv1 = scene_uv(i1);
@@ -107,14 +123,15 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
       vec2 duv0 = uv1 - uv0;
       vec2 duv1 = uv2 - uv0;
       float det0 = duv0.x * duv1.y - duv0.y * duv1.x;
-      if (det0 != 0.0f) {
+      if (partials && det0 != 0.0f) {
         si.dp_du = (duv1.y * (p1 - p0) - duv0.y * (p2 - p0)) / det0;
         si.dp_dv = (duv0.x * (p2 - p0) - duv1.x * (p1 - p0)) / det0;
       }
     }
   } else {
     vec3 p_inst = ray.o + hit.t * ray.d;
-    p_inst = transform_point(inst.to_object[0], inst.to_object[1], inst.to_object[2], p_inst);
+    if (hit.instance != 0u)
+      p_inst = transform_point(inst.to_object[0], inst.to_object[1], inst.to_object[2], p_inst);
     vec3 local =
         transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], p_inst);
     vec3 n_local;
@@ -150,21 +167,22 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
       dpdu_local = 2.0f * PI * dp_du_local;
       dpdv_local = vec3(0.0f, 0.0f, 1.0f);
     }
-    si.dp_du =
-        transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dpdu_local);
-    si.dp_du = transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], si.dp_du);
-    si.dp_dv =
-        transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dpdv_local);
-    si.dp_dv = transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], si.dp_dv);
+    if (partials) {
+      si.dp_du =
+          transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dpdu_local);
+      si.dp_du = instance_vector(hit.instance, inst, si.dp_du);
+      si.dp_dv =
+          transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dpdv_local);
+      si.dp_dv = instance_vector(hit.instance, inst, si.dp_dv);
+    }
     vec3 p_world = transform_point(shape.to_world[0], shape.to_world[1], shape.to_world[2], local);
-    si.p = transform_point(inst.to_world[0], inst.to_world[1], inst.to_world[2], p_world);
+    si.p = instance_point(hit.instance, inst, p_world);
     vec3 n = transform_normal(shape.to_object[0], shape.to_object[1], shape.to_object[2], n_local);
-    n = transform_normal(inst.to_object[0], inst.to_object[1], inst.to_object[2], n);
-    si.ng = normalize(n);
+    si.ng = normalize(instance_normal(hit.instance, inst, n));
     if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) si.ng = -si.ng;
     n_shading = si.ng;
     dp_du = transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dp_du_local);
-    dp_du = transform_vector(inst.to_world[0], inst.to_world[1], inst.to_world[2], dp_du);
+    dp_du = instance_vector(hit.instance, inst, dp_du);
   }
   si.frame = shading_frame(n_shading, dp_du);
   si.wi = frame_to_local(si.frame, -ray.d);
