@@ -130,11 +130,10 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
 
   // ---- What the ray found: emission, weighted against emitter sampling from prev_p.
   bool found_surface = hit.shape != NO_INDEX;
-  SurfaceInteraction si;
   vec3 le = vec3(0.0f);
   float em_pdf = 0.0f;
   if (found_surface) {
-    si = surface_interaction(s.ray, hit);
+    SurfaceInteraction si = surface_interaction(s.ray, hit);
     if (si.emitter != NO_INDEX) {
       if (first && it.hide_emitters != 0u) {
         s.ray = spawn_ray(si.p, si.ng, s.ray.d);
@@ -143,6 +142,9 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
       le = eval_emitter_surface(si);
       em_pdf = pdf_emitter_surface(s.prev_p, si);
     }
+    // Where the next samples start: the path's new vertex, or the direct integrator's first
+    // hit, which its later rounds keep. (A path that ends below leaves it unread.)
+    if (!direct || first) s.anchor = shading_point(si);
   } else if (!(first && it.hide_emitters != 0u)) {
     le = eval_environment(s.ray.d);
     em_pdf = pdf_environment(s.ray.d);
@@ -157,15 +159,12 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
     s.radiance += s.throughput * le * weight;
   }
 
-  // ---- Where to sample next: the path's new vertex, or the direct integrator's first hit.
+  // ---- Whether to sample from s.anchor, and which round of the direct integrator.
   uint round = 0u;
   if (direct) {
-    if (first) {
-      if (!found_surface) {
-        s.alive = 0u;
-        return no_shadow_ray();
-      }
-      s.anchor = shading_point(si);
+    if (first && !found_surface) {
+      s.alive = 0u;
+      return no_shadow_ray();
     }
     round = s.stage;
     s.stage += 1u;
@@ -178,7 +177,6 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
       s.alive = 0u;
       return no_shadow_ray();
     }
-    s.anchor = shading_point(si);
   }
   REF(ShadingPoint) sp = s.anchor;
   REF(Material) m = scene_material(sp.material);
