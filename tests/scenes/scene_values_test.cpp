@@ -562,7 +562,9 @@ TEST(SceneValues, ShapegroupsAndInstances) {
   EXPECT_EQ(b.globals.instance_count, 3u);
   EXPECT_EQ(b.instances[0].first_shape, 0u);
   EXPECT_EQ(b.instances[0].shape_count, 1u);
+  // Instance 0 is the identity, exactly: core/interaction.h skips its transforms.
   expect_near(apply(b.instances[0].to_world, glm::dvec3(1, 2, 3)), glm::dvec3(1, 2, 3), 0);
+  expect_near(apply(b.instances[0].to_object, glm::dvec3(1, 2, 3)), glm::dvec3(1, 2, 3), 0);
   EXPECT_EQ(b.instances[1].first_shape, 1u);
   EXPECT_EQ(b.instances[1].shape_count, 2u);
   expect_near(apply(b.instances[1].to_world, glm::dvec3(0)), glm::dvec3(10, 0, 0), 1e-6);
