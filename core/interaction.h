@@ -93,8 +93,8 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
     float b2 = hit.barycentrics.y;
     float b0 = 1.0f - b1 - b2;
     si.p = b0 * p0 + b1 * p1 + b2 * p2;
-    si.ng = normalize(cross(p1 - p0, p2 - p0));
-    if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) si.ng = -si.ng;
+    vec3 face_n = normalize(cross(p1 - p0, p2 - p0));
+    si.ng = (shape.flags & SHAPE_FLIP_NORMALS) != 0u ? -face_n : face_n;
     n_shading = si.ng;
     if ((shape.flags & SHAPE_HAS_NORMALS) != 0u) {
       vec3 n = b0 * scene_normal(i0) + b1 * scene_normal(i1) + b2 * scene_normal(i2);
@@ -105,7 +105,7 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
     if (partials) {
       // Without uvs Mitsuba (src/render/mesh.cpp) takes dp/du, dp/dv from coordinate_system of
       // the face normal before flip_normals.
-      Frame face = frame_from_normal(normalize(cross(p1 - p0, p2 - p0)));
+      Frame face = frame_from_normal(face_n);
       si.dp_du = face.s;
       si.dp_dv = face.t;
     }
