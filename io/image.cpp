@@ -150,12 +150,14 @@ void write_png_srgb(const std::string& path, const ImageRows& img) {
   if (img.channels > 4)
     fail_image(path, "PNG holds at most 4 channels, image has " + std::to_string(img.channels));
   const std::vector<std::string> names = names_of(img);
+  std::vector<bool> alpha(img.channels);
+  for (int c = 0; c < img.channels; ++c) alpha[c] = is_alpha_name(names[c]);
   std::vector<float> values(size_t(img.width) * img.channels);
   auto encoded_row = [&](int y, unsigned char* out) {
     img.row(y, values.data());
     for (size_t i = 0; i < values.size(); ++i) {
       float v = values[i];
-      float encoded = is_alpha_name(names[i % img.channels])
+      float encoded = alpha[i % img.channels]
                           ? std::fmin(std::fmax(v, 0.0f), 1.0f)  // fmax maps NaN to 0
                           : srgb_encode(v);
       out[i] = std::uint8_t(std::lround(encoded * 255.0f));
