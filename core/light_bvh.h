@@ -2,9 +2,10 @@
 // Lights with Adaptive Tree Splitting", HPG 2018; pbrt-v4 §12.6.3, BVHLightSampler). From the
 // root, each interior node sends the choice to a child with probability proportional to the
 // child's importance for the reference point, an upper-bound-shaped estimate of the light it
-// sends there. The probability of a given emitter is the product of those choices on the way
-// from its leaf up to the root, recomputed with the same arithmetic (core/emitter.h's MIS
-// densities depend on it).
+// sends there; this tree has up to LIGHT_BVH_WIDTH children a node (a binary tree collapsed,
+// scenes/light_bvh_build.cpp), so a descent reads fewer, contiguous, groups of nodes. The
+// probability of a given emitter is the product of those choices on the way from its leaf up to
+// the root, recomputed with the same arithmetic (core/emitter.h's MIS densities depend on it).
 #ifndef TWINRAY_CORE_LIGHT_BVH_H
 #define TWINRAY_CORE_LIGHT_BVH_H
 
@@ -44,12 +45,23 @@ INLINE float light_node_importance(IN(LightNode) n, vec3 p) {
   return n.phi * cos_theta_p / max(d2, n.radius);
 }
 
-// The probability of the child `first` (child0 when true) at an interior node, from the two
-// children's importances; zero when neither can light p.
-INLINE float light_child_probability(float importance0, float importance1, bool first) {
-  float total = importance0 + importance1;
-  if (!(total > 0.0f) || !(total < FLOAT_MAX)) return 0.0f;
-  return (first ? importance0 : importance1) / total;
+// The importances of an interior node's children (zero past child_count) and their sum, added
+// in the one order both the descent and the probability below use.
+struct LightChildren {
+  float importance[LIGHT_BVH_WIDTH];
+  float total;  // 0 when not finite
+};
+
+INLINE LightChildren light_children(IN(LightNode) n, vec3 p) {
+  LightChildren c;
+  c.total = 0.0f;
+  UNROLL for (uint k = 0u; k < LIGHT_BVH_WIDTH; ++k) {
+    c.importance[k] =
+        k < n.child_count ? light_node_importance(scene_light_node(n.first_child + k), p) : 0.0f;
+    c.total += c.importance[k];
+  }
+  if (!(c.total < FLOAT_MAX)) c.total = 0.0f;
+  return c;
 }
 
 // Descends from the root with u in [0, 1), rescaled at each choice. Returns the emitter of the
@@ -60,26 +72,28 @@ INLINE uint light_bvh_sample(uint root, vec3 p, float u, OUT(float) pmf) {
   LightNode n = scene_light_node(root);
   if (!(light_node_importance(n, p) > 0.0f)) return NO_INDEX;
   float prob = 1.0f;
-  while (n.child0 != NO_INDEX) {
-    REF(LightNode) c0 = scene_light_node(n.child0);
-    REF(LightNode) c1 = scene_light_node(n.child1);
-    float i0 = light_node_importance(c0, p);
-    float i1 = light_node_importance(c1, p);
-    float p0 = light_child_probability(i0, i1, true);
-    float p1 = light_child_probability(i0, i1, false);
-    if (!(p0 + p1 > 0.0f)) return NO_INDEX;
-    if (u < p0) {
-      n = c0;
-      u = min(u / p0, ONE_MINUS_EPSILON);
-      prob *= p0;
-    } else {
-      n = c1;
-      u = min((u - p0) / p1, ONE_MINUS_EPSILON);
-      prob *= p1;
+  while (n.child_count != 0u) {
+    LightChildren c = light_children(n, p);
+    if (!(c.total > 0.0f)) return NO_INDEX;
+    // The child of positive probability whose interval of the partial sums holds u (the last
+    // such child when rounding leaves u past them all).
+    uint chosen = 0u;
+    float chosen_p = 0.0f, chosen_below = 0.0f, below = 0.0f;
+    UNROLL for (uint k = 0u; k < LIGHT_BVH_WIDTH; ++k) {
+      float p_k = c.importance[k] / c.total;
+      if (p_k > 0.0f && u >= below) {
+        chosen = k;
+        chosen_p = p_k;
+        chosen_below = below;
+      }
+      below += p_k;
     }
+    u = clamp((u - chosen_below) / chosen_p, 0.0f, ONE_MINUS_EPSILON);
+    prob *= chosen_p;
+    n = scene_light_node(n.first_child + chosen);
   }
   pmf = prob;
-  return n.child1;
+  return n.emitter;
 }
 
 // The probability with which light_bvh_sample returns the emitter of leaf `leaf`
@@ -90,10 +104,13 @@ INLINE float light_bvh_pmf(uint root, vec3 p, uint leaf) {
   LightNode n = scene_light_node(node);
   float prob = 1.0f;
   while (node != root) {
-    REF(LightNode) parent = scene_light_node(n.parent);
-    float i0 = light_node_importance(scene_light_node(parent.child0), p);
-    float i1 = light_node_importance(scene_light_node(parent.child1), p);
-    prob *= light_child_probability(i0, i1, parent.child0 == node);
+    LightNode parent = scene_light_node(n.parent);
+    LightChildren c = light_children(parent, p);
+    float mine = 0.0f;
+    UNROLL for (uint k = 0u; k < LIGHT_BVH_WIDTH; ++k) {
+      if (parent.first_child + k == node) mine = c.importance[k];
+    }
+    prob *= c.total > 0.0f ? mine / c.total : 0.0f;
     node = n.parent;
     n = parent;
   }

@@ -179,10 +179,13 @@ const uint EMITTER_SELECTION_BVH = 2u;
 // A node of the light BVH (core/light_bvh.h): a sphere holding the emitters below it (around
 // their bounding box), their summed power phi, and a cone around w holding every direction of
 // their surface normals (or their emission axis) with half-angle theta_o; emission reaches at
-// most theta_e beyond that cone. The nodes are in depth-first order, the root first and each
-// interior node's child0 right after it, so that the leaves of a subtree, and the nodes a descent
-// visits near them, lie together in memory (emitters listed in scene order would scatter them).
-// A leaf has child0 NO_INDEX and its emitter in child1; Emitter.light_leaf leads back to it.
+// most theta_e beyond that cone. An interior node has 2 to LIGHT_BVH_WIDTH children, stored
+// side by side so that one descent step reads one contiguous group; the groups are in
+// depth-first order, each node's group before the groups below it, so that the nodes a descent
+// visits near the leaves lie together in memory (emitters listed in scene order would scatter
+// them). A leaf has child_count 0 and its emitter; Emitter.light_leaf leads back to it.
+const uint LIGHT_BVH_WIDTH = 4u;
+
 struct LightNode {
   vec3 centre;
   float radius;
@@ -191,11 +194,11 @@ struct LightNode {
   float cos_theta_o;
   float sin_theta_o;
   float cos_theta_e;
-  uint child0;  // interior: the two children; leaves: NO_INDEX, then the emitter
-  uint child1;
-  uint parent;  // NO_INDEX at the root
+  uint first_child;  // interior: its children are first_child .. first_child + child_count - 1
+  uint child_count;  // 0 for leaves
+  uint emitter;      // leaves: the emitter; NO_INDEX for interior nodes
+  uint parent;       // NO_INDEX at the root
   uint pad0;
-  uint pad1;
 };
 
 // ---- Camera, film, integrator ----------------------------------------------------------

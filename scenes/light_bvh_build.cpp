@@ -82,27 +82,32 @@ LightNode to_node(const Bounds& b) {
   n.cos_theta_o = std::max(round_down(b.normals.cos_theta), -1.0f);
   n.sin_theta_o = std::min(round_up(std::sin(theta_o)), 1.0f);
   n.cos_theta_e = std::max(round_down(b.cos_theta_e), -1.0f);
-  n.child0 = n.child1 = n.parent = NO_INDEX;
+  n.first_child = n.emitter = n.parent = NO_INDEX;
+  n.child_count = 0;
   return n;
 }
+
+// A node of the binary tree the splits make, before it is collapsed to LIGHT_BVH_WIDTH.
+struct BinaryNode {
+  Bounds bounds;
+  uint child[2] = {NO_INDEX, NO_INDEX};
+  uint emitter = NO_INDEX;
+};
 
 struct Builder {
   const std::vector<LightBounds>& bounds;
   const std::vector<double>& phi;
-  std::vector<LightNode>& nodes;
-  std::vector<uint>& leaves;
+  std::vector<BinaryNode> binary;
 
   glm::dvec3 centre(uint i) const { return 0.5 * (bounds[i].lo + bounds[i].hi); }
 
-  // Appends the subtree over [begin, end) in depth-first order and returns its root.
+  // Appends the binary subtree over [begin, end) and returns its root.
   uint build(std::vector<uint>::iterator begin, std::vector<uint>::iterator end) {
-    const uint index = uint(nodes.size());
+    const uint index = uint(binary.size());
+    binary.emplace_back();
     if (end - begin == 1) {
-      Bounds leaf;
-      leaf.add(bounds[*begin], phi[*begin]);
-      nodes.push_back(to_node(leaf));
-      nodes[index].child1 = *begin;
-      leaves[*begin] = index;
+      binary[index].bounds.add(bounds[*begin], phi[*begin]);
+      binary[index].emitter = *begin;
       return index;
     }
     Bounds node;
@@ -139,18 +144,57 @@ struct Builder {
           begin, end, [&](uint i) { return bucket_of(i, best_axis, lo, extent) <= best_split; });
       if (part != begin && part != end) mid = part;
     }
-    nodes.push_back(to_node(node));
+    binary[index].bounds = node;
     const uint c0 = build(begin, mid);
     const uint c1 = build(mid, end);
-    nodes[index].child0 = c0;
-    nodes[index].child1 = c1;
-    nodes[c0].parent = nodes[c1].parent = index;
+    binary[index].child[0] = c0;
+    binary[index].child[1] = c1;
     return index;
   }
 
   int bucket_of(uint i, int axis, double lo, double extent) const {
     int k = int(kBuckets * (centre(i)[axis] - lo) / extent);
     return std::clamp(k, 0, kBuckets - 1);
+  }
+};
+
+// Lays the binary tree out as core/light_bvh.h reads it: each interior node takes up to
+// LIGHT_BVH_WIDTH of its binary descendants as children, opening the most powerful interior one
+// until the group is full (a wide node stands for a binary subtree's top levels, as in Wald et
+// al., "Getting Rid of Packets", RT 2008), its group appended before the groups below it.
+struct Collapser {
+  const std::vector<BinaryNode>& binary;
+  std::vector<LightNode>& nodes;
+  std::vector<uint>& leaves;
+
+  // Fills in the node at `index`, already appended for binary node `b`, and everything below.
+  void lay_out(uint b, uint index) {
+    const BinaryNode& node = binary[b];
+    if (node.emitter != NO_INDEX) {
+      nodes[index].emitter = node.emitter;
+      leaves[node.emitter] = index;
+      return;
+    }
+    std::vector<uint> group{node.child[0], node.child[1]};
+    while (group.size() < LIGHT_BVH_WIDTH) {
+      auto open = group.end();
+      for (auto it = group.begin(); it != group.end(); ++it)
+        if (binary[*it].emitter == NO_INDEX &&
+            (open == group.end() || binary[*it].bounds.phi > binary[*open].bounds.phi))
+          open = it;
+      if (open == group.end()) break;
+      const uint opened = *open;
+      *open = binary[opened].child[1];
+      group.insert(open, binary[opened].child[0]);
+    }
+    const uint first = uint(nodes.size());
+    for (uint c : group) {
+      nodes.push_back(to_node(binary[c].bounds));
+      nodes.back().parent = index;
+    }
+    nodes[index].first_child = first;
+    nodes[index].child_count = uint(group.size());
+    for (uint k = 0; k < group.size(); ++k) lay_out(group[k], first + k);
   }
 };
 
@@ -162,8 +206,12 @@ uint build_light_bvh(const std::vector<LightBounds>& bounds, const std::vector<d
   nodes.clear();
   leaves.assign(bounds.size(), NO_INDEX);
   if (members.empty()) return NO_INDEX;
-  Builder builder{bounds, phi, nodes, leaves};
-  return builder.build(members.begin(), members.end());
+  Builder builder{bounds, phi, {}};
+  builder.binary.reserve(2 * members.size() - 1);
+  const uint root = builder.build(members.begin(), members.end());
+  nodes.push_back(to_node(builder.binary[root].bounds));
+  Collapser{builder.binary, nodes, leaves}.lay_out(root, 0);
+  return 0;
 }
 
 }  // namespace tr
