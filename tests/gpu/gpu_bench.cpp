@@ -2,13 +2,14 @@
 // each phase and the throughput, for the specialized and the all-features pipeline.
 //   gpu_bench SCENE.xml|SCENE.bin [--spp N] [--all-features | --all-features-but GROUPS]
 //             [--without-bsdfs TYPES] [--keep-loops] [--device D] [-D name=value]...
-//             [--save DUMP.bin]
+//             [--emitter-selection uniform|power|bvh] [--save DUMP.bin]
 // --all-features-but bsdf,aov (say): every feature, but the scene's own BSDF types and AOVs —
 // what one group of features costs the all-features pipeline. --without-bsdfs 10,11 (say) then
 // drops BSDF types (core/scene_types.h's BSDF_* numbers) from the pipeline's. --keep-loops takes
 // the shader's build for CPU devices (loops not unrolled) on a GPU too.
 // Built without the loader (TWINRAY_BENCH_NO_LOADER), it reads only scene dumps
-// (scene_dump.h), for machines that lack the loader's libraries.
+// (scene_dump.h), for machines that lack the loader's libraries; a dump keeps the emitter
+// selection it was saved with.
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include "scene_dump.h"
 #include "scenes/scene_features.h"
 #ifndef TWINRAY_BENCH_NO_LOADER
+#include "scenes/emitter_selection.h"
 #include "scenes/load_scene.h"
 #endif
 
@@ -110,6 +112,15 @@ int main(int argc, char** argv) {
       without_bsdfs = argv[++i];
     } else if (a == "--device" && i + 1 < argc) {
       options.device = argv[++i];
+#ifndef TWINRAY_BENCH_NO_LOADER
+    } else if (a == "--emitter-selection" && i + 1 < argc) {
+      try {
+        load.emitter_selection = tr::parse_emitter_selection(argv[++i]);
+      } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "gpu_bench: --emitter-selection: %s\n", e.what());
+        return 2;
+      }
+#endif
     } else if (a == "-D" && i + 1 < argc) {
       std::string kv = argv[++i];
 #ifndef TWINRAY_BENCH_NO_LOADER

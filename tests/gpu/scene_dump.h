@@ -1,6 +1,6 @@
-// Raw dump of a loaded scene's records (tr::Scene minus the path), so that the GPU benchmark
-// can run on machines without the loader's dependencies: the records are the std430 bytes
-// the backend uploads, written vector by vector as (count, bytes).
+// Raw dump of a loaded scene's records (every vector of SceneBuffers, its globals, spp and seed),
+// so that the GPU benchmark can run on machines without the loader's dependencies: the records are
+// the std430 bytes the backend uploads, written vector by vector as (count, bytes).
 #pragma once
 
 #include <cstdint>
@@ -39,12 +39,14 @@ inline void save_scene_dump(const Scene& s, const std::string& path) {
   dump_vector(out, b.texels);
   dump_vector(out, b.emitters);
   dump_vector(out, b.alias);
+  dump_vector(out, b.light_nodes);
   dump_vector(out, b.shapes);
   dump_vector(out, b.instances);
   dump_vector(out, b.positions);
   dump_vector(out, b.normals);
   dump_vector(out, b.uvs);
   dump_vector(out, b.indices);
+  dump_vector(out, b.attributes);
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
@@ -61,12 +63,14 @@ inline Scene load_scene_dump(const std::string& path) {
   undump_vector(in, b.texels);
   undump_vector(in, b.emitters);
   undump_vector(in, b.alias);
+  undump_vector(in, b.light_nodes);
   undump_vector(in, b.shapes);
   undump_vector(in, b.instances);
   undump_vector(in, b.positions);
   undump_vector(in, b.normals);
   undump_vector(in, b.uvs);
   undump_vector(in, b.indices);
+  undump_vector(in, b.attributes);
   if (!in) throw std::runtime_error(path + " is truncated");
   s.path = path;
   return s;
