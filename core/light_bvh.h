@@ -104,7 +104,7 @@ INLINE float light_bvh_pmf(uint root, vec3 p, uint leaf) {
   LightNode n = scene_light_node(node);
   float prob = 1.0f;
   while (node != root) {
-    LightNode parent = scene_light_node(n.parent);
+    REF(LightNode) parent = scene_light_node(n.parent);
     LightChildren c = light_children(parent, p);
     float mine = 0.0f;
     UNROLL for (uint k = 0u; k < LIGHT_BVH_WIDTH; ++k) {
