@@ -138,24 +138,31 @@ const uint EMITTER_PROJECTOR = 6u;
 struct Emitter {
   uint type;          // EMITTER_*
   uint shape;         // area: the emitting shape
-  uint texture;       // envmap: its bitmap; spot, projector: their texture, or NO_INDEX
   uint alias_offset;  // area meshes: per-triangle alias table; envmap: per-texel alias table
-  vec3 radiance;      // area, constant: radiance; point, spot: intensity; directional:
-                      // irradiance; projector: irradiance when untextured
-  float scale;        // envmap, projector: `scale`
-  vec3 position;      // point, spot, projector: position
   uint alias_count;
-  vec3 direction;    // directional: unit direction of travel; projector: to_world (0, 0, 1)
+  vec3 radiance;    // area, constant: radiance; point, spot: intensity; directional:
+                    // irradiance; projector: irradiance when untextured
+  uint light_leaf;  // EMITTER_SELECTION_BVH: its leaf in light_nodes, NO_INDEX outside the tree
+                    // (scenes/emitter_selection.cpp); read with no other selection
+  // area: its shape's type, flags, first_index, first_vertex and area, copied here so that a
+  // light sample on a mesh and its density read this record's first 64 bytes and not also the
+  // shape's (with many emitters, each record read is a cache miss on the sample's path).
+  uint shape_type;
+  uint shape_flags;
+  uint first_index;
+  uint first_vertex;
+  float area;
+  uint texture;      // envmap: its bitmap; spot, projector: their texture, or NO_INDEX
+  float scale;       // envmap, projector: `scale`
   float tan_cutoff;  // spot: tan(cutoff_angle), the texture's uv scale
+  vec3 position;     // point, spot, projector: position
+  uint pad0;
+  vec3 direction;  // directional: unit direction of travel; projector: to_world (0, 0, 1)
+  uint pad1;
   vec4 to_world[3];  // envmap: rotation local->world
   vec4 to_local[3];  // envmap, spot, projector: world->local
   vec4 cone;         // spot: cos(cutoff), cos(beam_width), cutoff, 1 / (cutoff - beam_width);
                      // projector: uv scales cot(fov_x / 2) / 2 and aspect cot(fov_x / 2) / 2
-  uint light_leaf;   // EMITTER_SELECTION_BVH: its leaf in light_nodes, NO_INDEX outside the tree
-                     // (scenes/emitter_selection.cpp); read with no other selection
-  uint pad0;
-  uint pad1;
-  uint pad2;
 };
 
 // Walker/Vose alias table entry (Vose 1991): pick bin i = floor(u * n); keep it with

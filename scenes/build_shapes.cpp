@@ -384,6 +384,11 @@ void SceneBuilder::finalize_shapes() {
       Emitter e{};
       e.type = EMITTER_AREA;
       e.shape = index;
+      e.shape_type = r.type;
+      e.shape_flags = r.flags;
+      e.first_index = r.first_index;
+      e.first_vertex = r.first_vertex;
+      e.area = r.area;
       e.texture = NO_INDEX;
       e.radiance = vec3(s.radiance);
       e.scale = 1.0f;

@@ -42,66 +42,66 @@ INLINE bool sphere_cone(IN(Shape) s, vec3 p, OUT(float) one_minus_cos_max) {
   return true;
 }
 
-// A point on the shape, uniform in area, with its normal (flip_normals applied; mesh shading
-// normals interpolated where present, as Mitsuba's Mesh::sample_position).
-INLINE void sample_shape_area(IN(Emitter) e, IN(Shape) s, INOUT(Rng) rng, OUT(vec3) p,
-                              OUT(vec3) n) {
-  if (TR_HAS_SHAPE(SHAPE_MESH) && s.type == SHAPE_MESH) {
-    // As Mitsuba 3's Mesh::sample_position, one 2D number picks the triangle (its x) and,
-    // rescaled, places the point in it: the point set a correlated sampler stratifies in 2D
-    // stays stratified over the whole shape, not over each triangle apart. Meshes of more
-    // triangles than ALIAS_REUSE_MAX_COUNT take a second number for the point.
-    float pmf;
-    vec2 u = rng_next_2d(rng);
-    uint tri;
-    if (e.alias_count <= ALIAS_REUSE_MAX_COUNT) {
-      tri = alias_sample_reuse(e.alias_offset, e.alias_count, u.x, pmf, u.x);
-    } else {
-      tri = alias_sample(e.alias_offset, e.alias_count, u, pmf);
-      u = rng_next_2d(rng);
-    }
-    vec2 b = square_to_uniform_triangle(u);
-    uint base = s.first_index + 3u * tri;
-    uint i0 = s.first_vertex + scene_index(base);
-    uint i1 = s.first_vertex + scene_index(base + 1u);
-    uint i2 = s.first_vertex + scene_index(base + 2u);
-    vec3 p0 = scene_position(i0);
-    vec3 p1 = scene_position(i1);
-    vec3 p2 = scene_position(i2);
-    float b0 = 1.0f - b.x - b.y;
-    p = b0 * p0 + b.x * p1 + b.y * p2;
-    if ((s.flags & SHAPE_HAS_NORMALS) != 0u)
-      n = normalize(b0 * scene_normal(i0) + b.x * scene_normal(i1) + b.y * scene_normal(i2));
-    else
-      n = normalize(cross(p1 - p0, p2 - p0));
+// A point on the emitter's mesh, uniform in area, with its normal (shading normals interpolated
+// where present, as Mitsuba's Mesh::sample_position). Reads the emitter's copies of its shape's
+// fields only.
+INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
+  // As Mitsuba 3's Mesh::sample_position, one 2D number picks the triangle (its x) and,
+  // rescaled, places the point in it: the point set a correlated sampler stratifies in 2D
+  // stays stratified over the whole shape, not over each triangle apart. Meshes of more
+  // triangles than ALIAS_REUSE_MAX_COUNT take a second number for the point.
+  float pmf;
+  vec2 u = rng_next_2d(rng);
+  uint tri;
+  if (e.alias_count <= ALIAS_REUSE_MAX_COUNT) {
+    tri = alias_sample_reuse(e.alias_offset, e.alias_count, u.x, pmf, u.x);
   } else {
-    vec2 u = rng_next_2d(rng);
-    vec3 local;
-    vec3 n_local;
-    if (s.type == SHAPE_SPHERE) {
-      local = square_to_uniform_sphere(u);
-      n_local = local;
-    } else if (s.type == SHAPE_DISK) {
-      vec2 d = square_to_uniform_disk_concentric(u);
-      local = vec3(d.x, d.y, 0.0f);
-      n_local = vec3(0.0f, 0.0f, 1.0f);
-    } else {
-      float phi = 2.0f * PI * u.y;
-      local = vec3(cos(phi), sin(phi), u.x);
-      n_local = vec3(local.x, local.y, 0.0f);
-    }
-    p = transform_point(s.to_world[0], s.to_world[1], s.to_world[2], local);
-    n = normalize(transform_normal(s.to_object[0], s.to_object[1], s.to_object[2], n_local));
+    tri = alias_sample(e.alias_offset, e.alias_count, u, pmf);
+    u = rng_next_2d(rng);
   }
-  if ((s.flags & SHAPE_FLIP_NORMALS) != 0u) n = -n;
+  vec2 b = square_to_uniform_triangle(u);
+  uint base = e.first_index + 3u * tri;
+  uint i0 = e.first_vertex + scene_index(base);
+  uint i1 = e.first_vertex + scene_index(base + 1u);
+  uint i2 = e.first_vertex + scene_index(base + 2u);
+  vec3 p0 = scene_position(i0);
+  vec3 p1 = scene_position(i1);
+  vec3 p2 = scene_position(i2);
+  float b0 = 1.0f - b.x - b.y;
+  p = b0 * p0 + b.x * p1 + b.y * p2;
+  if ((e.shape_flags & SHAPE_HAS_NORMALS) != 0u)
+    n = normalize(b0 * scene_normal(i0) + b.x * scene_normal(i1) + b.y * scene_normal(i2));
+  else
+    n = normalize(cross(p1 - p0, p2 - p0));
+}
+
+// A point on an analytic shape (sphere, disk, cylinder), uniform in area, with its normal.
+INLINE void sample_analytic_area(IN(Shape) s, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
+  vec2 u = rng_next_2d(rng);
+  vec3 local;
+  vec3 n_local;
+  if (s.type == SHAPE_SPHERE) {
+    local = square_to_uniform_sphere(u);
+    n_local = local;
+  } else if (s.type == SHAPE_DISK) {
+    vec2 d = square_to_uniform_disk_concentric(u);
+    local = vec3(d.x, d.y, 0.0f);
+    n_local = vec3(0.0f, 0.0f, 1.0f);
+  } else {
+    float phi = 2.0f * PI * u.y;
+    local = vec3(cos(phi), sin(phi), u.x);
+    n_local = vec3(local.x, local.y, 0.0f);
+  }
+  p = transform_point(s.to_world[0], s.to_world[1], s.to_world[2], local);
+  n = normalize(transform_normal(s.to_object[0], s.to_object[1], s.to_object[2], n_local));
 }
 
 INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) rng) {
   EmitterSample s = emitter_sample_failed();
-  REF(Shape) shape = scene_shape(e.shape);
   float one_minus_cos_max;
-  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE &&
-      sphere_cone(shape, ref_p, one_minus_cos_max)) {
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && e.shape_type == SHAPE_SPHERE &&
+      sphere_cone(scene_shape(e.shape), ref_p, one_minus_cos_max)) {
+    REF(Shape) shape = scene_shape(e.shape);
     // pbrt-v4 §6.2.4: sample cos(theta) in the cone, then the sphere point whose direction
     // from the centre makes angle alpha with the axis (law of cosines).
     vec2 u = rng_next_2d(rng);
@@ -122,7 +122,7 @@ INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) r
     Frame f = frame_from_normal((ref_p - c) / dc);
     vec3 w = frame_to_world(f, vec3(sin_alpha * cos(phi), sin_alpha * sin(phi), cos_alpha));
     s.p = c + r * w;
-    s.n = (shape.flags & SHAPE_FLIP_NORMALS) != 0u ? -w : w;
+    s.n = w;
     vec3 v = s.p - ref_p;
     s.dist = length(v);
     s.d = v / s.dist;
@@ -130,7 +130,10 @@ INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) r
   } else {
     vec3 p;
     vec3 n;
-    sample_shape_area(e, shape, rng, p, n);
+    if (TR_HAS_SHAPE(SHAPE_MESH) && e.shape_type == SHAPE_MESH)
+      sample_mesh_area(e, rng, p, n);
+    else
+      sample_analytic_area(scene_shape(e.shape), rng, p, n);
     vec3 v = p - ref_p;
     float dist2 = dot(v, v);
     if (!(dist2 > 0.0f)) return s;
@@ -140,8 +143,9 @@ INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) r
     s.d = v / s.dist;
     float cos_l = abs(dot(n, s.d));
     if (!(cos_l > 0.0f)) return s;
-    s.pdf = dist2 / (cos_l * shape.area);
+    s.pdf = dist2 / (cos_l * e.area);
   }
+  if ((e.shape_flags & SHAPE_FLIP_NORMALS) != 0u) s.n = -s.n;
   // One-sided emission: only the side the normal faces emits (Mitsuba's area emitter).
   // Points seen exactly edge-on (the reference point in the emitter's own plane) have an
   // unbounded density and carry no energy: the sample fails.
@@ -156,16 +160,15 @@ INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) r
 // Solid-angle density with which sample_area_emitter produces the point p (normal n)
 // from ref_p.
 INLINE float pdf_area_emitter(IN(Emitter) e, vec3 ref_p, vec3 p, vec3 n) {
-  REF(Shape) shape = scene_shape(e.shape);
   float one_minus_cos_max;
-  if (TR_HAS_SHAPE(SHAPE_SPHERE) && shape.type == SHAPE_SPHERE &&
-      sphere_cone(shape, ref_p, one_minus_cos_max))
+  if (TR_HAS_SHAPE(SHAPE_SPHERE) && e.shape_type == SHAPE_SPHERE &&
+      sphere_cone(scene_shape(e.shape), ref_p, one_minus_cos_max))
     return 1.0f / (2.0f * PI * one_minus_cos_max);
   vec3 v = p - ref_p;
   float dist2 = dot(v, v);
   float cos_l = abs(dot(n, v)) * inversesqrt(dist2);
   if (!(cos_l > 0.0f)) return 0.0f;
-  return dist2 / (cos_l * shape.area);
+  return dist2 / (cos_l * e.area);
 }
 
 // Radiance leaving the emitter towards wi (local shading frame of the emitter's surface).
