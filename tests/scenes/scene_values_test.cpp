@@ -172,6 +172,32 @@ TEST(SceneValues, AnalyticShapes) {
   expect_near(apply(shapes[1].to_world, glm::dvec3(0, 0, 0)), glm::dvec3(1, 0, 0), 1e-6);
 }
 
+// An area emitter keeps copies of its shape's fields for light sampling (core/emitters/area.h):
+// they must be its shape's, for meshes placed after others and for analytic shapes.
+TEST(SceneValues, AreaEmittersCopyTheirShapesFields) {
+  Scene s = load_text(
+      "<shape type=\"cube\"/>"
+      "<shape type=\"rectangle\"><boolean name=\"flip_normals\" value=\"true\"/>"
+      "<transform name=\"to_world\"><scale value=\"3\"/></transform>"
+      "<emitter type=\"area\"/></shape>"
+      "<shape type=\"cube\"><emitter type=\"area\"/></shape>"
+      "<shape type=\"sphere\"><float name=\"radius\" value=\"2\"/><emitter "
+      "type=\"area\"/></shape>");
+  const SceneBuffers& b = s.buffers;
+  ASSERT_EQ(b.emitters.size(), 3u);
+  int meshes = 0;
+  for (const Emitter& e : b.emitters) {
+    const Shape& shape = b.shapes[e.shape];
+    EXPECT_EQ(e.shape_type, shape.type);
+    EXPECT_EQ(e.shape_flags, shape.flags);
+    EXPECT_EQ(e.first_index, shape.first_index);
+    EXPECT_EQ(e.first_vertex, shape.first_vertex);
+    EXPECT_EQ(e.area, shape.area);
+    if (shape.type == SHAPE_MESH && shape.first_index > 0u) ++meshes;
+  }
+  EXPECT_EQ(meshes, 2);
+}
+
 TEST(SceneValues, DefaultsOverridesAndIncludes) {
   std::filesystem::path dir = fresh_dir();
   write_file(
