@@ -159,8 +159,9 @@ struct Emitter {
   uint pad0;
   vec3 direction;  // directional: unit direction of travel; projector: to_world (0, 0, 1)
   uint pad1;
-  vec4 to_world[3];  // envmap: rotation local->world
-  vec4 to_local[3];  // envmap, spot, projector: world->local
+  vec4 to_world[3];  // envmap: rotation local->world; area, a mesh of one triangle: its vertices
+  vec4 to_local[3];  // envmap, spot, projector: world->local; area, a mesh of one triangle with
+                     // vertex normals: its normals (scenes/build_shapes.cpp)
   vec4 cone;         // spot: cos(cutoff), cos(beam_width), cutoff, 1 / (cutoff - beam_width);
                      // projector: uv scales cot(fov_x / 2) / 2 and aspect cot(fov_x / 2) / 2
 };

@@ -409,6 +409,15 @@ void SceneBuilder::finalize_shapes() {
         e.alias_offset = uint(b_.alias.size());
         e.alias_count = uint(table.size());
         b_.alias.insert(b_.alias.end(), table.begin(), table.end());
+        if (r.triangle_count == 1u) {
+          // A mesh of one triangle: its vertices and normals, as the buffers hold them, for a
+          // light sample to read here (core/emitters/area.h, sample_mesh_area).
+          for (int k = 0; k < 3; ++k) {
+            const uint v = s.mesh.indices[k];
+            e.to_world[k] = vec4(s.mesh.positions[v], 1.0f);
+            e.to_local[k] = s.mesh.normals.empty() ? vec4(0.0f) : vec4(s.mesh.normals[v], 0.0f);
+          }
+        }
       }
       r.emitter = uint(b_.emitters.size());
       b_.emitters.push_back(e);

@@ -50,27 +50,49 @@ INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec
   // rescaled, places the point in it: the point set a correlated sampler stratifies in 2D
   // stays stratified over the whole shape, not over each triangle apart. Meshes of more
   // triangles than ALIAS_REUSE_MAX_COUNT take a second number for the point.
-  float pmf;
   vec2 u = rng_next_2d(rng);
-  uint tri;
-  if (e.alias_count <= ALIAS_REUSE_MAX_COUNT) {
-    tri = alias_sample_reuse(e.alias_offset, e.alias_count, u.x, pmf, u.x);
+  bool has_normals = (e.shape_flags & SHAPE_HAS_NORMALS) != 0u;
+  vec3 p0, p1, p2;
+  vec3 n0 = vec3(0.0f), n1 = vec3(0.0f), n2 = vec3(0.0f);
+  if (e.alias_count == 1u) {
+    // A mesh of one triangle carries it in its record (Emitter.to_world, to_local): with many
+    // such emitters, the table entry, indices, vertices and normals would each be a dependent
+    // cache miss. Its one-entry table (q = 1) would return u as it is.
+    p0 = vec3(e.to_world[0]);
+    p1 = vec3(e.to_world[1]);
+    p2 = vec3(e.to_world[2]);
+    if (has_normals) {
+      n0 = vec3(e.to_local[0]);
+      n1 = vec3(e.to_local[1]);
+      n2 = vec3(e.to_local[2]);
+    }
   } else {
-    tri = alias_sample(e.alias_offset, e.alias_count, u, pmf);
-    u = rng_next_2d(rng);
+    float pmf;
+    uint tri;
+    if (e.alias_count <= ALIAS_REUSE_MAX_COUNT) {
+      tri = alias_sample_reuse(e.alias_offset, e.alias_count, u.x, pmf, u.x);
+    } else {
+      tri = alias_sample(e.alias_offset, e.alias_count, u, pmf);
+      u = rng_next_2d(rng);
+    }
+    uint base = e.first_index + 3u * tri;
+    uint i0 = e.first_vertex + scene_index(base);
+    uint i1 = e.first_vertex + scene_index(base + 1u);
+    uint i2 = e.first_vertex + scene_index(base + 2u);
+    p0 = scene_position(i0);
+    p1 = scene_position(i1);
+    p2 = scene_position(i2);
+    if (has_normals) {
+      n0 = scene_normal(i0);
+      n1 = scene_normal(i1);
+      n2 = scene_normal(i2);
+    }
   }
   vec2 b = square_to_uniform_triangle(u);
-  uint base = e.first_index + 3u * tri;
-  uint i0 = e.first_vertex + scene_index(base);
-  uint i1 = e.first_vertex + scene_index(base + 1u);
-  uint i2 = e.first_vertex + scene_index(base + 2u);
-  vec3 p0 = scene_position(i0);
-  vec3 p1 = scene_position(i1);
-  vec3 p2 = scene_position(i2);
   float b0 = 1.0f - b.x - b.y;
   p = b0 * p0 + b.x * p1 + b.y * p2;
-  if ((e.shape_flags & SHAPE_HAS_NORMALS) != 0u)
-    n = normalize(b0 * scene_normal(i0) + b.x * scene_normal(i1) + b.y * scene_normal(i2));
+  if (has_normals)
+    n = normalize(b0 * n0 + b.x * n1 + b.y * n2);
   else
     n = normalize(cross(p1 - p0, p2 - p0));
 }

@@ -198,6 +198,42 @@ TEST(SceneValues, AreaEmittersCopyTheirShapesFields) {
   EXPECT_EQ(meshes, 2);
 }
 
+// An emitting mesh of one triangle also carries the triangle's vertices and normals, as the
+// buffers hold them, for its light samples (core/emitters/area.h, sample_mesh_area).
+TEST(SceneValues, OneTriangleEmittersCarryTheirTriangle) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 2 0\nf 1 2 3\n");
+  write_file(dir, "tri_n.obj",
+             "v 0 0 0\nv 1 0 0\nv 0 2 1\nvn 0 0 1\nvn 0 1 1\nvn 1 0 1\nf 1//1 2//2 3//3\n");
+  const std::string emitting = "<emitter type=\"area\"/></shape>";
+  Scene s = load_scene(
+      write_file(dir, "scene.xml",
+                 scene_xml("<shape type=\"cube\"/>"
+                           "<shape type=\"obj\"><string name=\"filename\" value=\"tri.obj\"/>"
+                           "<boolean name=\"face_normals\" value=\"true\"/>"
+                           "<transform name=\"to_world\"><translate x=\"3\"/></transform>" +
+                           emitting +
+                           "<shape type=\"obj\"><string name=\"filename\" value=\"tri_n.obj\"/>"
+                           "<transform name=\"to_world\"><rotate y=\"1\" angle=\"30\"/>"
+                           "</transform>" +
+                           emitting)),
+      {});
+  const SceneBuffers& b = s.buffers;
+  ASSERT_EQ(b.emitters.size(), 2u);
+  uint with_normals = 0;
+  for (const Emitter& e : b.emitters) {
+    ASSERT_EQ(e.alias_count, 1u);
+    const bool has_normals = (e.shape_flags & SHAPE_HAS_NORMALS) != 0u;
+    with_normals += has_normals ? 1u : 0u;
+    for (uint k = 0; k < 3; ++k) {
+      const uint v = e.first_vertex + b.indices[e.first_index + k];
+      EXPECT_EQ(vec3(e.to_world[k]), vec3(b.positions[v])) << "vertex " << k;
+      if (has_normals) EXPECT_EQ(vec3(e.to_local[k]), vec3(b.normals[v])) << "normal " << k;
+    }
+  }
+  EXPECT_EQ(with_normals, 1u);
+}
+
 TEST(SceneValues, DefaultsOverridesAndIncludes) {
   std::filesystem::path dir = fresh_dir();
   write_file(
