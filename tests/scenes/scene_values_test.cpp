@@ -228,7 +228,9 @@ TEST(SceneValues, OneTriangleEmittersCarryTheirTriangle) {
     for (uint k = 0; k < 3; ++k) {
       const uint v = e.first_vertex + b.indices[e.first_index + k];
       EXPECT_EQ(vec3(e.to_world[k]), vec3(b.positions[v])) << "vertex " << k;
-      if (has_normals) EXPECT_EQ(vec3(e.to_local[k]), vec3(b.normals[v])) << "normal " << k;
+      if (has_normals) {
+        EXPECT_EQ(vec3(e.to_local[k]), vec3(b.normals[v])) << "normal " << k;
+      }
     }
   }
   EXPECT_EQ(with_normals, 1u);
