@@ -17,6 +17,7 @@
 //   bsdf_flags(m, uv)           lobes this material can produce (BSDF_* bits)
 //   bsdf_eval(m, uv, wi, wo)    f(wi, wo) |cos theta_o|, zero for delta lobes
 //   bsdf_pdf(m, uv, wi, wo)     solid-angle density of bsdf_sample returning wo (smooth lobes)
+//   bsdf_surface_eval_pdf(g, m, uv, wi, wo)   both at once (Mitsuba's eval_pdf), at a surface
 //   bsdf_sample(m, uv, wi, u1, u2)
 #ifndef TWINRAY_CORE_BSDF_H
 #define TWINRAY_CORE_BSDF_H
@@ -74,62 +75,33 @@ INLINE uint bsdf_base_flags(IN(Material) m, TexCoord uv) {
 }
 
 // Delta lobes have neither a density nor a value: only BSDFs with smooth lobes appear here.
-INLINE vec3 bsdf_base_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE BsdfEvalPdf bsdf_base_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   switch (m.type) {
     case BSDF_DIFFUSE:
-      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_eval_pdf(m, uv, wi, wo);
       break;
     case BSDF_ROUGHCONDUCTOR:
-      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_eval_pdf(m, uv, wi, wo);
       break;
     case BSDF_ROUGHDIELECTRIC:
-      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_eval_pdf(m, uv, wi, wo);
       break;
     case BSDF_PLASTIC:
-      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_eval_pdf(m, uv, wi, wo);
       break;
     case BSDF_ROUGHPLASTIC:
-      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_eval_pdf(m, uv, wi, wo);
       break;
     case BSDF_PRINCIPLED:
-      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_eval_pdf(m, uv, wi, wo);
       break;
     case BSDF_PPLASTIC:
-      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_eval(m, uv, wi, wo);
+      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_eval_pdf(m, uv, wi, wo);
       break;
     default:
       break;
   }
-  return vec3(0.0f);
-}
-
-INLINE float bsdf_base_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  switch (m.type) {
-    case BSDF_DIFFUSE:
-      if (TR_HAS_BSDF(BSDF_DIFFUSE)) return diffuse_pdf(m, uv, wi, wo);
-      break;
-    case BSDF_ROUGHCONDUCTOR:
-      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR)) return roughconductor_pdf(m, uv, wi, wo);
-      break;
-    case BSDF_ROUGHDIELECTRIC:
-      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC)) return roughdielectric_pdf(m, uv, wi, wo);
-      break;
-    case BSDF_PLASTIC:
-      if (TR_HAS_BSDF(BSDF_PLASTIC)) return plastic_pdf(m, uv, wi, wo);
-      break;
-    case BSDF_ROUGHPLASTIC:
-      if (TR_HAS_BSDF(BSDF_ROUGHPLASTIC)) return roughplastic_pdf(m, uv, wi, wo);
-      break;
-    case BSDF_PRINCIPLED:
-      if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return principled_pdf(m, uv, wi, wo);
-      break;
-    case BSDF_PPLASTIC:
-      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return pplastic_pdf(m, uv, wi, wo);
-      break;
-    default:
-      break;
-  }
-  return 0.0f;
+  return bsdf_eval_pdf_zero();
 }
 
 INLINE BsdfSample bsdf_base_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -210,22 +182,15 @@ INLINE uint bsdf_leaf_flags(IN(Material) m, TexCoord uv) {
   return flags;
 }
 
-INLINE vec3 bsdf_leaf_eval(IN(Material) stored, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE BsdfEvalPdf bsdf_leaf_eval_pdf(IN(Material) stored, TexCoord uv, vec3 wi, vec3 wo) {
   Material m = material_at(stored, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
     wo.z = mulsign(wo.z, wi.z);
     wi.z = abs(wi.z);
   }
-  return bsdf_base_eval(m, uv, wi, wo) * bsdf_opacity(m);
-}
-
-INLINE float bsdf_leaf_pdf(IN(Material) stored, TexCoord uv, vec3 wi, vec3 wo) {
-  Material m = material_at(stored, uv);
-  if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u) {
-    wo.z = mulsign(wo.z, wi.z);
-    wi.z = abs(wi.z);
-  }
-  return bsdf_base_pdf(m, uv, wi, wo) * bsdf_opacity(m);
+  BsdfEvalPdf v = bsdf_base_eval_pdf(m, uv, wi, wo);
+  float opacity = bsdf_opacity(m);
+  return bsdf_eval_pdf_make(v.f * opacity, v.pdf * opacity);
 }
 
 INLINE BsdfSample bsdf_leaf_sample(IN(Material) stored, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -268,7 +233,7 @@ INLINE vec3 bsdf_leaf_diffuse_reflectance(IN(Material) stored, TexCoord uv, vec3
     default:
       break;
   }
-  return PI * bsdf_base_eval(m, uv, wi, vec3(0.0f, 0.0f, 1.0f));
+  return PI * bsdf_base_eval_pdf(m, uv, wi, vec3(0.0f, 0.0f, 1.0f)).f;
 }
 
 TR_NAMESPACE_END
@@ -284,14 +249,9 @@ INLINE uint bsdf_tree_flags(IN(Material) m, TexCoord uv) {
   return bsdf_leaf_flags(m, uv);
 }
 
-INLINE vec3 bsdf_tree_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_eval(m, uv, wi, wo);
-  return bsdf_leaf_eval(m, uv, wi, wo);
-}
-
-INLINE float bsdf_tree_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_pdf(m, uv, wi, wo);
-  return bsdf_leaf_pdf(m, uv, wi, wo);
+INLINE BsdfEvalPdf bsdf_tree_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_eval_pdf(m, uv, wi, wo);
+  return bsdf_leaf_eval_pdf(m, uv, wi, wo);
 }
 
 INLINE BsdfSample bsdf_tree_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -324,7 +284,9 @@ INLINE uint bsdf_flags(Material m, TexCoord uv) {
   return bsdf_tree_flags(m, uv);
 }
 
-INLINE vec3 bsdf_surface_eval(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
+// The shadow terminator scales the value, not the density.
+INLINE BsdfEvalPdf bsdf_surface_eval_pdf(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi,
+                                         vec3 wo) {
   float scale = 1.0f;
   if (bsdf_is_perturbed(m)) {
     if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
@@ -333,29 +295,15 @@ INLINE vec3 bsdf_surface_eval(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 w
     }
     Frame f = bsdf_perturbed_frame(m, g, uv, wi);
     vec3 wo_perturbed = frame_to_local(f, wo);
-    if (!(wo.z * wo_perturbed.z > 0.0f)) return vec3(0.0f);
+    if (!(wo.z * wo_perturbed.z > 0.0f)) return bsdf_eval_pdf_zero();
     if (normalmap_shadowing(m)) scale = normalmap_shadow_terminator(f.n, wo);
     wi = frame_to_local(f, wi);
     wo = wo_perturbed;
     m = scene_material(normalmap_child(m));
   }
-  return bsdf_tree_eval(m, uv, wi, wo) * scale;
-}
-
-INLINE float bsdf_surface_pdf(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (bsdf_is_perturbed(m)) {
-    if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
-      wo.z = mulsign(wo.z, wi.z);
-      wi.z = abs(wi.z);
-    }
-    Frame f = bsdf_perturbed_frame(m, g, uv, wi);
-    vec3 wo_perturbed = frame_to_local(f, wo);
-    if (!(wo.z * wo_perturbed.z > 0.0f)) return 0.0f;
-    wi = frame_to_local(f, wi);
-    wo = wo_perturbed;
-    m = scene_material(normalmap_child(m));
-  }
-  return bsdf_tree_pdf(m, uv, wi, wo);
+  BsdfEvalPdf v = bsdf_tree_eval_pdf(m, uv, wi, wo);
+  v.f *= scale;
+  return v;
 }
 
 INLINE BsdfSample bsdf_surface_sample(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, float u1,
@@ -396,11 +344,11 @@ INLINE vec3 bsdf_diffuse_reflectance(Material m, TexCoord uv, vec3 wi) {
 }
 
 INLINE vec3 bsdf_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  return bsdf_surface_eval(bsdf_surface_flat(), m, uv, wi, wo);
+  return bsdf_surface_eval_pdf(bsdf_surface_flat(), m, uv, wi, wo).f;
 }
 
 INLINE float bsdf_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  return bsdf_surface_pdf(bsdf_surface_flat(), m, uv, wi, wo);
+  return bsdf_surface_eval_pdf(bsdf_surface_flat(), m, uv, wi, wo).pdf;
 }
 
 INLINE BsdfSample bsdf_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {

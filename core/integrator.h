@@ -191,12 +191,10 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);
-      vec3 f = bsdf_surface_eval(surface, m, sp.tex, sp.wi, wo);
-      float mis = es.delta != 0u ? 1.0f
-                                 : power_heuristic(
-                                       es.pdf * frac_emitter,
-                                       bsdf_surface_pdf(surface, m, sp.tex, sp.wi, wo) * frac_bsdf);
-      sr.contribution = base * f * es.weight * (mis / n_emitter);
+      BsdfEvalPdf bsdf = bsdf_surface_eval_pdf(surface, m, sp.tex, sp.wi, wo);
+      float mis =
+          es.delta != 0u ? 1.0f : power_heuristic(es.pdf * frac_emitter, bsdf.pdf * frac_bsdf);
+      sr.contribution = base * bsdf.f * es.weight * (mis / n_emitter);
       if (any(notEqual(sr.contribution, vec3(0.0f)))) {
         sr.enabled = 1u;
         sr.ray = shadow_ray_to(sp.p, sp.ng, es.p, es.n, es.d, es.dist);

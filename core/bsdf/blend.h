@@ -23,7 +23,7 @@
 #include "core/material_slots.h"
 #include "core/scene_access.h"
 
-// Included by core/bsdf.h after bsdf_leaf_flags/eval/pdf/sample, which evaluate one non-blend
+// Included by core/bsdf.h after bsdf_leaf_flags/eval_pdf/sample, which evaluate one non-blend
 // material with its `twosided` and `mask` wrappers.
 
 TR_NAMESPACE_BEGIN
@@ -117,26 +117,19 @@ INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
   return value;
 }
 
-INLINE vec3 blend_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE BsdfEvalPdf blend_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   BlendStack st = blend_walk(m, uv);
   Material leaf;
   float weight;
   uint path;
-  vec3 value = vec3(0.0f);
-  while (blend_next_leaf(st, uv, leaf, weight, path))
-    if (weight > 0.0f) value += weight * bsdf_leaf_eval(leaf, uv, wi, wo);
-  return value;
-}
-
-INLINE float blend_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  BlendStack st = blend_walk(m, uv);
-  Material leaf;
-  float weight;
-  uint path;
-  float pdf = 0.0f;
-  while (blend_next_leaf(st, uv, leaf, weight, path))
-    if (weight > 0.0f) pdf += weight * bsdf_leaf_pdf(leaf, uv, wi, wo);
-  return pdf;
+  BsdfEvalPdf sum = bsdf_eval_pdf_zero();
+  while (blend_next_leaf(st, uv, leaf, weight, path)) {
+    if (!(weight > 0.0f)) continue;
+    BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, wo);
+    sum.f += weight * v.f;
+    sum.pdf += weight * v.pdf;
+  }
+  return sum;
 }
 
 INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -178,8 +171,9 @@ INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, v
   uint path;
   while (blend_next_leaf(st, uv, leaf, weight, path)) {
     if (path == chosen_path || !(weight > 0.0f)) continue;
-    value += weight * bsdf_leaf_eval(leaf, uv, wi, s.wo);
-    pdf += weight * bsdf_leaf_pdf(leaf, uv, wi, s.wo);
+    BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, s.wo);
+    value += weight * v.f;
+    pdf += weight * v.pdf;
   }
   s.pdf = pdf;
   s.weight = value / pdf;

@@ -71,6 +71,27 @@ INLINE BsdfSample bsdf_sample_smooth(vec3 wo, float pdf, vec3 value, float eta, 
   return bsdf_sample_make(wo, pdf, weight, eta, lobe);
 }
 
+// f(wi, wo) |cos theta_o| and the density of sampling wo, computed together where they share
+// work (Mitsuba's BSDF::eval_pdf): the emitter sample's MIS needs both, and so does a sample.
+struct BsdfEvalPdf {
+  vec3 f;
+  float pdf;
+};
+
+INLINE BsdfEvalPdf bsdf_eval_pdf_make(vec3 f, float pdf) {
+  BsdfEvalPdf r;
+  r.f = f;
+  r.pdf = pdf;
+  return r;
+}
+
+INLINE BsdfEvalPdf bsdf_eval_pdf_zero() { return bsdf_eval_pdf_make(vec3(0.0f), 0.0f); }
+
+// A smooth-lobe sample from its value and density at wo.
+INLINE BsdfSample bsdf_sample_smooth(vec3 wo, BsdfEvalPdf v, float eta, uint lobe) {
+  return bsdf_sample_smooth(wo, v.pdf, v.f, eta, lobe);
+}
+
 // A scalar parameter (Mitsuba's Texture::eval_1): the loader stores scalar parameters already
 // reduced as eval_1 reduces them (a bitmap's luminance, a constant color's channel mean), in
 // every channel, so the first channel is the value.

@@ -11,14 +11,10 @@ TR_NAMESPACE_BEGIN
 
 INLINE uint diffuse_flags(IN(Material) m, TexCoord uv) { return BSDF_DIFFUSE_REFLECTION; }
 
-INLINE vec3 diffuse_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
-  return m.param[DIFFUSE_REFLECTANCE].value * (INV_PI * wo.z);
-}
-
-INLINE float diffuse_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
-  return square_to_cosine_hemisphere_pdf(wo);
+INLINE BsdfEvalPdf diffuse_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return bsdf_eval_pdf_zero();
+  return bsdf_eval_pdf_make(m.param[DIFFUSE_REFLECTANCE].value * (INV_PI * wo.z),
+                            square_to_cosine_hemisphere_pdf(wo));
 }
 
 INLINE BsdfSample diffuse_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {

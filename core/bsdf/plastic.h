@@ -42,20 +42,15 @@ INLINE vec3 plastic_diffuse_albedo(IN(Material) m, TexCoord uv, float internal_r
   return diff / denom;
 }
 
-INLINE vec3 plastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
+INLINE BsdfEvalPdf plastic_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return bsdf_eval_pdf_zero();
   float f_i = fresnel_dielectric_reflectance(wi.z, m.eta);
   float f_o = fresnel_dielectric_reflectance(wo.z, m.eta);
   vec3 diff = plastic_diffuse_albedo(m, uv, fresnel_diffuse_reflectance(1.0f / m.eta));
-  return diff *
-         (square_to_cosine_hemisphere_pdf(wo) * (1.0f - f_i) * (1.0f - f_o) / (m.eta * m.eta));
-}
-
-INLINE float plastic_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
-  float f_i = fresnel_dielectric_reflectance(wi.z, m.eta);
   float p_diffuse = 1.0f - plastic_specular_probability(f_i, m.extra);
-  return square_to_cosine_hemisphere_pdf(wo) * p_diffuse;
+  float cosine_pdf = square_to_cosine_hemisphere_pdf(wo);
+  return bsdf_eval_pdf_make(diff * (cosine_pdf * (1.0f - f_i) * (1.0f - f_o) / (m.eta * m.eta)),
+                            cosine_pdf * p_diffuse);
 }
 
 INLINE BsdfSample plastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -67,8 +62,7 @@ INLINE BsdfSample plastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1,
     return bsdf_sample_make(reflect_local(wi), p_specular, weight, 1.0f, BSDF_DELTA_REFLECTION);
   }
   vec3 wo = square_to_cosine_hemisphere(u2);
-  return bsdf_sample_smooth(wo, plastic_pdf(m, uv, wi, wo), plastic_eval(m, uv, wi, wo), 1.0f,
-                            BSDF_DIFFUSE_REFLECTION);
+  return bsdf_sample_smooth(wo, plastic_eval_pdf(m, uv, wi, wo), 1.0f, BSDF_DIFFUSE_REFLECTION);
 }
 
 TR_NAMESPACE_END

@@ -31,8 +31,8 @@ INLINE Microfacet pplastic_distribution(IN(Material) m, TexCoord uv) {
                          (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
-INLINE vec3 pplastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
+INLINE BsdfEvalPdf pplastic_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return bsdf_eval_pdf_zero();
   float eta = m.param[PPLASTIC_ETA].value.x;
   Microfacet d = pplastic_distribution(m, uv);
   vec3 h = normalize(wo + wi);
@@ -40,18 +40,14 @@ INLINE vec3 pplastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
                    microfacet_g(d, wi, wo, h) / (4.0f * wi.z);
   float transmitted = (1.0f - fresnel_dielectric_reflectance(wi.z, eta)) *
                       (1.0f - fresnel_dielectric_reflectance(wo.z, eta));
-  return m.param[PLASTIC_SPECULAR_REFLECTANCE].value * specular +
-         m.param[PLASTIC_DIFFUSE_REFLECTANCE].value * (transmitted * INV_PI * wo.z);
-}
-
-INLINE float pplastic_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
-  vec3 h = normalize(wo + wi);
-  float specular = 0.0f;
+  float specular_pdf = 0.0f;
   if (dot(wi, h) > 0.0f && dot(wo, h) > 0.0f)
     // Half-vector density times dh/dwo = 1 / (4 wo.h) (Walter et al. 2007, eq. 14).
-    specular = microfacet_pdf(pplastic_distribution(m, uv), wi, h) / (4.0f * dot(wo, h));
-  return m.extra * specular + (1.0f - m.extra) * square_to_cosine_hemisphere_pdf(wo);
+    specular_pdf = microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
+  return bsdf_eval_pdf_make(
+      m.param[PLASTIC_SPECULAR_REFLECTANCE].value * specular +
+          m.param[PLASTIC_DIFFUSE_REFLECTANCE].value * (transmitted * INV_PI * wo.z),
+      m.extra * specular_pdf + (1.0f - m.extra) * square_to_cosine_hemisphere_pdf(wo));
 }
 
 INLINE BsdfSample pplastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -60,7 +56,7 @@ INLINE BsdfSample pplastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1
   vec3 wo = specular ? reflect_about(wi, microfacet_sample(pplastic_distribution(m, uv), wi, u2))
                      : square_to_cosine_hemisphere(u2);
   if (!(wo.z > 0.0f)) return bsdf_sample_failed();
-  return bsdf_sample_smooth(wo, pplastic_pdf(m, uv, wi, wo), pplastic_eval(m, uv, wi, wo), 1.0f,
+  return bsdf_sample_smooth(wo, pplastic_eval_pdf(m, uv, wi, wo), 1.0f,
                             specular ? BSDF_GLOSSY_REFLECTION : BSDF_DIFFUSE_REFLECTION);
 }
 

@@ -177,10 +177,11 @@ INLINE vec4 principled_lobe_weights(PrincipledParams p, bool front_side, float f
               p.specular_rate * bsdf * (1.0f - f), p.specular_rate * (1.0f - bsdf * (1.0f - f)));
 }
 
-INLINE vec3 principled_eval_params(PrincipledParams p, vec3 wi, vec3 wo) {
+INLINE BsdfEvalPdf principled_eval_pdf_params(PrincipledParams p, vec3 wi, vec3 wo) {
+  BsdfEvalPdf r = bsdf_eval_pdf_zero();
   float cos_i = wi.z;
   float cos_o = wo.z;
-  if (cos_i == 0.0f) return vec3(0.0f);
+  if (cos_i == 0.0f) return r;
   float brdf = (1.0f - p.metallic) * (1.0f - p.spec_trans);
   float bsdf = (1.0f - p.metallic) * p.spec_trans;
   bool reflect = cos_i * cos_o > 0.0f;
@@ -189,89 +190,73 @@ INLINE vec3 principled_eval_params(PrincipledParams p, vec3 wi, vec3 wo) {
   float eta_path = front_side ? p.eta : 1.0f / p.eta;
   float inv_eta_path = front_side ? 1.0f / p.eta : p.eta;
   vec3 h = principled_half_vector(wi, wo, reflect, eta_path);
-  if (h.z == 0.0f) return vec3(0.0f);
+  if (h.z == 0.0f) return r;
   Microfacet d = principled_specular_distribution(p);
-  float f_dielectric = fresnel_dielectric_reflectance(dot(wi, h), p.eta);
+  float wi_h = dot(wi, h);
+  float wo_h = dot(wo, h);
+  float f_dielectric = fresnel_dielectric_reflectance(wi_h, p.eta);
   bool reflection_ok = principled_compatible(h, wi, wo, cos_i, true);
   bool refraction_ok = principled_compatible(h, wi, wo, cos_i, false);
+
+  // ---- The value.
   float D = microfacet_d(d, h);
   float G = microfacet_g(d, wi, wo, h);
-  vec3 value = vec3(0.0f);
   if (reflect && reflection_ok && f_dielectric > 0.0f) {
     float lum = luminance(p.base_color);
-    vec3 F = principled_fresnel(p, f_dielectric, lum, dot(wi, h), front_side, bsdf);
-    value += F * (D * G / (4.0f * abs(cos_i)));
+    vec3 F = principled_fresnel(p, f_dielectric, lum, wi_h, front_side, bsdf);
+    r.f += F * (D * G / (4.0f * abs(cos_i)));
   }
   if (bsdf > 0.0f && refract && refraction_ok && f_dielectric < 1.0f) {
-    float wi_h = dot(wi, h);
-    float wo_h = dot(wo, h);
     float denom = wi_h + eta_path * wo_h;
     float t = abs(inv_eta_path * inv_eta_path * (1.0f - f_dielectric) * D * G * eta_path *
                   eta_path * wi_h * wo_h / (cos_i * denom * denom));
-    value += sqrt(p.base_color) * (bsdf * t);
+    r.f += sqrt(p.base_color) * (bsdf * t);
   }
   if (p.clearcoat > 0.0f && reflect && reflection_ok && front_side) {
-    float f_cc = principled_schlick(vec3(0.04f), dot(wi, h), p.eta).x;
+    float f_cc = principled_schlick(vec3(0.04f), wi_h, p.eta).x;
     float d_cc = principled_gtr1_d(principled_gtr1_alpha(p), h);
     float g_cc = principled_smith_ggx1(wi, h, 0.25f) * principled_smith_ggx1(wo, h, 0.25f);
-    value += vec3(p.clearcoat * 0.25f * f_cc * d_cc * g_cc * abs(cos_o));
+    r.f += vec3(p.clearcoat * 0.25f * f_cc * d_cc * g_cc * abs(cos_o));
   }
   if (brdf > 0.0f && reflect && front_side) {
     // Burley 2015 eq. 4 (retro-reflection) and §3.1 (Hanrahan-Krueger-like flattening).
     float fo = principled_schlick_weight(abs(cos_o));
     float fi = principled_schlick_weight(abs(cos_i));
     float f_diff = (1.0f - 0.5f * fi) * (1.0f - 0.5f * fo);
-    float cos_theta_d = dot(h, wo);
+    float cos_theta_d = wo_h;
     float rr = 2.0f * p.roughness * cos_theta_d * cos_theta_d;
     float f_retro = rr * (fo + fi + fo * fi * (rr - 1.0f));
     float fss90 = rr / 2.0f;
     float fss = (1.0f + (fss90 - 1.0f) * fo) * (1.0f + (fss90 - 1.0f) * fi);
     float f_ss = 1.25f * (fss * (1.0f / (abs(cos_o) + abs(cos_i)) - 0.5f) + 0.5f);
     float lobe = (f_diff + f_retro) * (1.0f - p.flatness) + f_ss * p.flatness;
-    value += p.base_color * (brdf * abs(cos_o) * INV_PI * lobe);
+    r.f += p.base_color * (brdf * abs(cos_o) * INV_PI * lobe);
     if (p.sheen > 0.0f && 1.0f - p.metallic > 0.0f) {
       // Burley 2012 §5.3: Schlick-shaped sheen, tinted toward the base hue.
       float fd = principled_schlick_weight(abs(cos_theta_d));
       float lum = luminance(p.base_color);
       vec3 c_tint = lum > 0.0f ? p.base_color / lum : vec3(1.0f);
       vec3 c_sheen = vec3(1.0f) + (c_tint - vec3(1.0f)) * p.sheen_tint;
-      value += c_sheen * (p.sheen * (1.0f - p.metallic) * fd * abs(cos_o));
+      r.f += c_sheen * (p.sheen * (1.0f - p.metallic) * fd * abs(cos_o));
     }
   }
-  return value;
-}
 
-INLINE float principled_pdf_params(PrincipledParams p, vec3 wi, vec3 wo) {
-  float cos_i = wi.z;
-  float cos_o = wo.z;
-  if (cos_i == 0.0f) return 0.0f;
-  bool front_side = cos_i > 0.0f;
-  float bsdf = (1.0f - p.metallic) * p.spec_trans;
-  // Behind the surface only the transmissive part scatters (Mitsuba's sample() refuses
-  // otherwise).
-  if (!front_side && !(bsdf > 0.0f)) return 0.0f;
-  float eta_path = front_side ? p.eta : 1.0f / p.eta;
-  bool reflect = cos_i * cos_o > 0.0f;
-  bool refract = cos_i * cos_o < 0.0f;
-  vec3 h = principled_half_vector(wi, wo, reflect, eta_path);
-  if (h.z == 0.0f) return 0.0f;
-  Microfacet d = principled_specular_distribution(p);
-  float f_dielectric = fresnel_dielectric_reflectance(dot(wi, h), p.eta);
+  // ---- The density. Behind the surface only the transmissive part scatters (Mitsuba's
+  // sample() refuses otherwise).
+  if (!front_side && !(bsdf > 0.0f)) return r;
   vec4 w = principled_lobe_weights(p, front_side, f_dielectric);
   w /= w.x + w.y + w.z + w.w;
-  float wi_h = dot(wi, h);
-  float wo_h = dot(wo, h);
   float dh_dwo =
       reflect ? 1.0f / (4.0f * wo_h) : eta_path * eta_path * wo_h / sqr(wi_h + eta_path * wo_h);
   dh_dwo = abs(dh_dwo);
   float pdf = 0.0f;
-  bool reflect_ok = reflect && principled_compatible(h, wi, wo, cos_i, true);
   float spec = microfacet_pdf(d, front_side ? wi : -wi, h) * dh_dwo;
-  if (reflect_ok)
+  if (reflect && reflection_ok)
     pdf += w.w * spec + w.y * principled_gtr1_pdf(principled_gtr1_alpha(p), h) * dh_dwo;
   if (reflect) pdf += w.x * square_to_cosine_hemisphere_pdf(wo);
-  if (refract && principled_compatible(h, wi, wo, cos_i, false)) pdf += w.z * spec;
-  return pdf < FLOAT_MAX ? pdf : 0.0f;
+  if (refract && refraction_ok) pdf += w.z * spec;
+  r.pdf = pdf < FLOAT_MAX ? pdf : 0.0f;
+  return r;
 }
 
 INLINE BsdfSample principled_sample_params(PrincipledParams p, vec3 wi, float u1, vec2 u2) {
@@ -312,16 +297,11 @@ INLINE BsdfSample principled_sample_params(PrincipledParams p, vec3 wi, float u1
     if (!(principled_compatible(h, wi, wo, cos_i, true) && cos_i * wo.z > 0.0f))
       return bsdf_sample_failed();
   }
-  return bsdf_sample_smooth(wo, principled_pdf_params(p, wi, wo), principled_eval_params(p, wi, wo),
-                            eta, lobe);
+  return bsdf_sample_smooth(wo, principled_eval_pdf_params(p, wi, wo), eta, lobe);
 }
 
-INLINE vec3 principled_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  return principled_eval_params(principled_params(m, uv), wi, wo);
-}
-
-INLINE float principled_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  return principled_pdf_params(principled_params(m, uv), wi, wo);
+INLINE BsdfEvalPdf principled_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  return principled_eval_pdf_params(principled_params(m, uv), wi, wo);
 }
 
 INLINE BsdfSample principled_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {

@@ -21,24 +21,23 @@ INLINE Microfacet roughconductor_distribution(IN(Material) m, TexCoord uv) {
                          (m.flags & MATERIAL_SAMPLE_VISIBLE) != 0u);
 }
 
-INLINE vec3 roughconductor_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
+INLINE BsdfEvalPdf roughconductor_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  BsdfEvalPdf r = bsdf_eval_pdf_zero();
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return r;
   Microfacet d = roughconductor_distribution(m, uv);
   vec3 h = normalize(wi + wo);
   float D = microfacet_d(d, h);
-  if (D == 0.0f) return vec3(0.0f);
-  float G = microfacet_g(d, wi, wo, h);
-  vec3 F = fresnel_conductor(dot(wi, h), m.param[CONDUCTOR_ETA].value, m.param[CONDUCTOR_K].value);
-  // f cos_o = F D G / (4 cos_i).
-  return F * m.param[CONDUCTOR_SPECULAR_REFLECTANCE].value * (D * G / (4.0f * wi.z));
-}
-
-INLINE float roughconductor_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  vec3 h = normalize(wi + wo);
-  if (wi.z <= 0.0f || wo.z <= 0.0f || dot(wi, h) <= 0.0f || dot(wo, h) <= 0.0f) return 0.0f;
-  Microfacet d = roughconductor_distribution(m, uv);
+  if (D != 0.0f) {
+    float G = microfacet_g(d, wi, wo, h);
+    vec3 F =
+        fresnel_conductor(dot(wi, h), m.param[CONDUCTOR_ETA].value, m.param[CONDUCTOR_K].value);
+    // f cos_o = F D G / (4 cos_i).
+    r.f = F * m.param[CONDUCTOR_SPECULAR_REFLECTANCE].value * (D * G / (4.0f * wi.z));
+  }
   // Density of h times dh/dwo = 1 / (4 wo.h) (Walter et al. 2007, eq. 14).
-  return microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
+  if (!(dot(wi, h) <= 0.0f || dot(wo, h) <= 0.0f))
+    r.pdf = microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
+  return r;
 }
 
 INLINE BsdfSample roughconductor_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -46,8 +45,8 @@ INLINE BsdfSample roughconductor_sample(IN(Material) m, TexCoord uv, vec3 wi, fl
   vec3 h = microfacet_sample(roughconductor_distribution(m, uv), wi, u2);
   vec3 wo = reflect_about(wi, h);
   if (!(wo.z > 0.0f)) return bsdf_sample_failed();
-  return bsdf_sample_smooth(wo, roughconductor_pdf(m, uv, wi, wo),
-                            roughconductor_eval(m, uv, wi, wo), 1.0f, BSDF_GLOSSY_REFLECTION);
+  return bsdf_sample_smooth(wo, roughconductor_eval_pdf(m, uv, wi, wo), 1.0f,
+                            BSDF_GLOSSY_REFLECTION);
 }
 
 TR_NAMESPACE_END

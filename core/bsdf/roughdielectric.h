@@ -49,14 +49,10 @@ INLINE vec3 roughdielectric_half_vector(vec3 wi, vec3 wo, float eta) {
   return h.z >= 0.0f ? h : -h;
 }
 
-INLINE vec3 roughdielectric_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+// f cos_o at wo through its half vector h (eqs. 20 and 21).
+INLINE vec3 roughdielectric_eval_half(IN(Material) m, Microfacet d, vec3 wi, vec3 wo, vec3 h,
+                                      float eta, bool reflect) {
   float cos_i = wi.z;
-  if (cos_i == 0.0f) return vec3(0.0f);
-  bool reflect = cos_i * wo.z > 0.0f;
-  float eta = cos_i > 0.0f ? m.eta : 1.0f / m.eta;
-  vec3 h = roughdielectric_half_vector(wi, wo, eta);
-  if (h.z == 0.0f) return vec3(0.0f);
-  Microfacet d = roughdielectric_distribution(m, uv);
   float D = microfacet_d(d, h);
   float G = microfacet_g(d, wi, wo, h);
   if (D == 0.0f || G == 0.0f) return vec3(0.0f);
@@ -90,17 +86,22 @@ INLINE float roughdielectric_pdf_half(Microfacet d, vec3 wi, vec3 wo, vec3 h, fl
   return prob * abs(dh_dwo);
 }
 
-INLINE float roughdielectric_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+INLINE BsdfEvalPdf roughdielectric_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  BsdfEvalPdf r = bsdf_eval_pdf_zero();
   float cos_i = wi.z;
-  if (cos_i == 0.0f) return 0.0f;
+  if (cos_i == 0.0f) return r;
   bool reflect = cos_i * wo.z > 0.0f;
   float eta = cos_i > 0.0f ? m.eta : 1.0f / m.eta;
   vec3 h = roughdielectric_half_vector(wi, wo, eta);
+  if (h.z == 0.0f) return r;
+  Microfacet d = roughdielectric_distribution(m, uv);
+  r.f = roughdielectric_eval_half(m, d, wi, wo, h, eta, reflect);
   // The sides must agree between micro- and macro-surface (the chi+ terms of G).
-  if (h.z == 0.0f || dot(wi, h) * wi.z <= 0.0f || dot(wo, h) * wo.z <= 0.0f) return 0.0f;
-  float pdf =
-      roughdielectric_pdf_half(roughdielectric_distribution(m, uv), wi, wo, h, eta, m.eta, reflect);
-  return pdf < FLOAT_MAX ? pdf : 0.0f;
+  if (!(dot(wi, h) * wi.z <= 0.0f || dot(wo, h) * wo.z <= 0.0f)) {
+    float pdf = roughdielectric_pdf_half(d, wi, wo, h, eta, m.eta, reflect);
+    r.pdf = pdf < FLOAT_MAX ? pdf : 0.0f;
+  }
+  return r;
 }
 
 INLINE BsdfSample roughdielectric_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -119,12 +120,11 @@ INLINE BsdfSample roughdielectric_sample(IN(Material) m, TexCoord uv, vec3 wi, f
   vec3 wo = reflect ? reflect_about(wi, h) : refract_about(wi, h, cos_t, eta_ti);
   // A direction on the wrong side for its lobe is masked (G1(wo, h) = 0).
   if (reflect ? !(wo.z * cos_i > 0.0f) : !(wo.z * cos_i < 0.0f)) return bsdf_sample_failed();
-  // Density and value at wo as pdf() and eval() see it, so that both agree exactly with the
+  // Density and value at wo as eval_pdf() sees it, so that both agree exactly with the
   // sample (Mitsuba writes the weight in closed form — G1(wo, h) for visible normals — which
   // is the same up to rounding, and up to D / D' of the widened sampling distribution that
   // it leaves out).
-  return bsdf_sample_smooth(wo, roughdielectric_pdf(m, uv, wi, wo),
-                            roughdielectric_eval(m, uv, wi, wo), reflect ? 1.0f : eta_it,
+  return bsdf_sample_smooth(wo, roughdielectric_eval_pdf(m, uv, wi, wo), reflect ? 1.0f : eta_it,
                             reflect ? BSDF_GLOSSY_REFLECTION : BSDF_GLOSSY_TRANSMISSION);
 }
 

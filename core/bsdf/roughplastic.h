@@ -49,8 +49,8 @@ INLINE float roughplastic_transmittance(IN(Material) m, float cos_theta) {
   return mix(v0, v1, x - float(index));
 }
 
-INLINE vec3 roughplastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return vec3(0.0f);
+INLINE BsdfEvalPdf roughplastic_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
+  if (wi.z <= 0.0f || wo.z <= 0.0f) return bsdf_eval_pdf_zero();
   Microfacet d = roughplastic_distribution(m);
   vec3 h = normalize(wo + wi);
   float F = fresnel_dielectric_reflectance(dot(wi, h), m.eta);
@@ -59,18 +59,12 @@ INLINE vec3 roughplastic_eval(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   float t_i = roughplastic_transmittance(m, wi.z);
   float t_o = roughplastic_transmittance(m, wo.z);
   vec3 diff = plastic_diffuse_albedo(m, uv, m.param[ROUGHPLASTIC_TABLE].value.x);
-  return value + diff * (INV_PI * wo.z * t_i * t_o / (m.eta * m.eta));
-}
-
-INLINE float roughplastic_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  if (wi.z <= 0.0f || wo.z <= 0.0f) return 0.0f;
-  float t_i = roughplastic_transmittance(m, wi.z);
   float p_specular = plastic_specular_probability(1.0f - t_i, m.extra);
-  Microfacet d = roughplastic_distribution(m);
-  vec3 h = normalize(wo + wi);
   // Half-vector density times dh/dwo = 1 / (4 wo.h), as for roughconductor.
   float specular = microfacet_pdf(d, wi, h) / (4.0f * dot(wo, h));
-  return p_specular * specular + (1.0f - p_specular) * square_to_cosine_hemisphere_pdf(wo);
+  return bsdf_eval_pdf_make(
+      value + diff * (INV_PI * wo.z * t_i * t_o / (m.eta * m.eta)),
+      p_specular * specular + (1.0f - p_specular) * square_to_cosine_hemisphere_pdf(wo));
 }
 
 INLINE BsdfSample roughplastic_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
@@ -81,8 +75,8 @@ INLINE BsdfSample roughplastic_sample(IN(Material) m, TexCoord uv, vec3 wi, floa
   vec3 wo = specular ? reflect_about(wi, microfacet_sample(roughplastic_distribution(m), wi, u2))
                      : square_to_cosine_hemisphere(u2);
   if (!(wo.z > 0.0f)) return bsdf_sample_failed();
-  return bsdf_sample_smooth(wo, roughplastic_pdf(m, uv, wi, wo), roughplastic_eval(m, uv, wi, wo),
-                            1.0f, specular ? BSDF_GLOSSY_REFLECTION : BSDF_DIFFUSE_REFLECTION);
+  return bsdf_sample_smooth(wo, roughplastic_eval_pdf(m, uv, wi, wo), 1.0f,
+                            specular ? BSDF_GLOSSY_REFLECTION : BSDF_DIFFUSE_REFLECTION);
 }
 
 TR_NAMESPACE_END

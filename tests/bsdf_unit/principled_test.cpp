@@ -45,8 +45,9 @@ TEST(Principled, MatchesMitsubaRegressionValues) {
     // Python computes the direction in double before Mitsuba rounds it to float.
     double theta = i / 19.0 * (M_PI / 2.0);
     vec3 wo(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
-    double pdf = principled_pdf_params(p, wi, wo);
-    double value = principled_eval_params(p, wi, wo).x;
+    BsdfEvalPdf v = principled_eval_pdf_params(p, wi, wo);
+    double pdf = v.pdf;
+    double value = v.f.x;
     EXPECT_NEAR(pdf, kPdfTrue[i], 1e-5 * kPdfTrue[i] + 1e-8) << "pdf, wo " << i;
     EXPECT_NEAR(value, kEvalTrue[i], 1e-5 * kEvalTrue[i] + 1e-8) << "eval, wo " << i;
   }
