@@ -324,7 +324,8 @@ TEST(FilmEstimator, BoxKeepsEachSampleInItsPixel) {
 // Lanczos (the strongest negative lobes), within 5 standard errors (two-sided false-failure
 // probability 6e-7 each).
 TEST(FilmEstimator, SignedSamplesDevelopToTheFilteredValue) {
-  const FilmSetup f{RFILTER_LANCZOS, vec4(3.0f), 3.0f, false, uvec2(12, 9), uvec2(0), uvec2(12, 9)};
+  const FilmSetup f{RFILTER_LANCZOS, vec4(3.0f), 3.0f,         false,
+                    uvec2(12, 9),    uvec2(0),   uvec2(12, 9), 0};
   const Camera c = make_camera(f);
   const std::vector<Term> terms = radiance_terms();
   const std::vector<double> truth = exact(c, f, terms, true);

@@ -33,20 +33,21 @@ std::vector<KernelScene> kernel_scenes() {
   const std::string src = TWINRAY_SOURCE_DIR;
   const std::string spheres = src + "/validation/mitsuba/tests/scenes/bsdf_spheres/";
   return {
-      {std::string(TWINRAY_SHARED_DIR) + "/perf/mitsuba-cbox/cbox-rgb.xml", {{"res", "24"}}, 0},
+      {std::string(TWINRAY_SHARED_DIR) + "/perf/mitsuba-cbox/cbox-rgb.xml", {{"res", "24"}}, 0, ""},
       {src + "/examples/scenes/cornell-box/cornell_box.xml",
        {{"width", "24"}, {"height", "24"}},
-       1},
-      {src + "/bench/scenes/cornell_principled.xml", {{"width", "24"}, {"height", "24"}}, 2},
-      {spheres + "test_textured_diffuse_path.xml", {}, 3},
-      {spheres + "test_arealight_path.xml", {}, 4},
-      {spheres + "test_texturedprincipled1_path.xml", {}, 5},
+       1,
+       ""},
+      {src + "/bench/scenes/cornell_principled.xml", {{"width", "24"}, {"height", "24"}}, 2, ""},
+      {spheres + "test_textured_diffuse_path.xml", {}, 3, ""},
+      {spheres + "test_arealight_path.xml", {}, 4, ""},
+      {spheres + "test_texturedprincipled1_path.xml", {}, 5, ""},
       {std::string(TWINRAY_SHARED_DIR) + "/perf/mitsuba-cbox/cbox-rgb.xml",
        {{"res", "24"}},
        3,
        "albedo,depth,sh_normal"},
-      {test_scene("direct_vs_path.xml"), {{"integrator", "direct"}}, 1},
-      {test_scene("direct_vs_path.xml"), {{"sampler", "sobol"}, {"spp", "2"}}, 4},
+      {test_scene("direct_vs_path.xml"), {{"integrator", "direct"}}, 1, ""},
+      {test_scene("direct_vs_path.xml"), {{"sampler", "sobol"}, {"spp", "2"}}, 4, ""},
   };
 }
 

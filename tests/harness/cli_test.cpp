@@ -234,7 +234,9 @@ TEST(ConvergeCommand, RepeatsGiveErrorBars) {
     EXPECT_GT(v[4], 0.0) << "three renders of distinct seeds differ: " << line;
     EXPECT_LT(v[4], v[3]) << line;
     EXPECT_EQ(v[5], 3.0) << line;
-    if (v[1] >= 2.0) EXPECT_GT(v[6], 0.0) << "the renders' own estimate: " << line;
+    if (v[1] >= 2.0) {
+      EXPECT_GT(v[6], 0.0) << "the renders' own estimate: " << line;
+    }
     EXPECT_GT(v[7], 0.0) << "the spread among them: " << line;
   }
   EXPECT_EQ(rungs, 3);  // 1, 2 and 4 spp

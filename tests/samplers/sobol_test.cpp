@@ -76,7 +76,9 @@ TEST(SobolMatrices, NibbleTableProductIsTheMatricesProduct) {
                             SOBOL_MATRICES[(d + 1) * SOBOL_COLUMNS + k]);
       EXPECT_EQ(sobol_reversed_bits(index, d, SOBOL_COLUMNS), expected)
           << "dimensions " << d << ", " << d + 1 << ", index " << index;
-      if (index < 1024u) EXPECT_EQ(sobol_reversed_bits(index, d, 10u), expected) << index;
+      if (index < 1024u) {
+        EXPECT_EQ(sobol_reversed_bits(index, d, 10u), expected) << index;
+      }
     }
 }
 
@@ -179,7 +181,9 @@ TEST(SobolNets, ScramblingKeepsTheTValue) {
       uint expected = t_value(unscrambled(m, pr.dimensions), m);
       uint t = t_value(pass_points(s, pixel, 1u, 5u, pr.draws), m);
       EXPECT_EQ(t, expected) << "draw " << pr.draws[0] << " pixel " << pixel;
-      if (pr.dimensions.size() == 2 && pr.dimensions[0] == 0) EXPECT_EQ(t, 0u) << "film: (0, 2)";
+      if (pr.dimensions.size() == 2 && pr.dimensions[0] == 0) {
+        EXPECT_EQ(t, 0u) << "film: (0, 2)";
+      }
     }
 }
 

@@ -117,12 +117,6 @@ const Property& prop(const Node& n, const std::string& name) {
   throw std::runtime_error("no property " + name + " on " + n.type);
 }
 
-bool has(const Node& n, const std::string& name) {
-  for (const Property& p : n.props)
-    if (p.name == name) return true;
-  return false;
-}
-
 void expect_vec(glm::dvec3 a, glm::dvec3 b, double tol = 1e-9) {
   EXPECT_NEAR(a.x, b.x, tol);
   EXPECT_NEAR(a.y, b.y, tol);
