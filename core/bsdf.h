@@ -218,7 +218,6 @@ INLINE vec3 bsdf_leaf_diffuse_reflectance(IN(Material) stored, TexCoord uv, vec3
   Material m = material_at(stored, uv);
   if (TR_HAS_MATERIAL_FLAG(MATERIAL_TWOSIDED) && (m.flags & MATERIAL_TWOSIDED) != 0u)
     wi.z = abs(wi.z);
-  vec3 normal = vec3(0.0f, 0.0f, 1.0f);
   switch (m.type) {
     case BSDF_DIFFUSE:
       if (TR_HAS_BSDF(BSDF_DIFFUSE)) return m.param[DIFFUSE_REFLECTANCE].value;
@@ -231,24 +230,10 @@ INLINE vec3 bsdf_leaf_diffuse_reflectance(IN(Material) stored, TexCoord uv, vec3
     case BSDF_PRINCIPLED:
       if (TR_HAS_BSDF(BSDF_PRINCIPLED)) return m.param[PRINCIPLED_BASE_COLOR].value;
       break;
-    // The smooth BSDFs without a diffuse parameter, by their value at the normal. Only these:
-    // every BSDF a shader dispatches to is compiled in, even where it cannot be reached.
-    case BSDF_ROUGHCONDUCTOR:
-      if (TR_HAS_BSDF(BSDF_ROUGHCONDUCTOR))
-        return PI * roughconductor_eval_pdf(m, uv, wi, normal).f;
-      break;
-    case BSDF_ROUGHDIELECTRIC:
-      if (TR_HAS_BSDF(BSDF_ROUGHDIELECTRIC))
-        return PI * roughdielectric_eval_pdf(m, uv, wi, normal).f;
-      break;
-    case BSDF_PPLASTIC:
-      if (TR_HAS_BSDF(BSDF_PPLASTIC)) return PI * pplastic_eval_pdf(m, uv, wi, normal).f;
-      break;
     default:
       break;
   }
-  // The delta-only BSDFs (conductor, dielectric, thindielectric) have no value there.
-  return vec3(0.0f);
+  return PI * bsdf_base_eval_pdf(m, uv, wi, vec3(0.0f, 0.0f, 1.0f)).f;
 }
 
 TR_NAMESPACE_END
