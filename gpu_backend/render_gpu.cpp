@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 #include "gpu_backend/device_info.h"
 #include "gpu_backend/gpu_error.h"
@@ -15,6 +16,8 @@
 #include "gpu_backend/vk_instance.h"
 #include "render/pass_size.h"
 #include "scenes/scene_features.h"
+#include "spirv/aov.h"
+#include "spirv/aov_loops.h"
 #include "spirv/raygen.h"
 #include "spirv/raygen_loops.h"
 
@@ -49,6 +52,10 @@ uint32_t batch_spp(const DeviceInfo& device, size_t pixels) {
       std::clamp(std::floor(samples_per_dispatch / double(pixels)), 1.0, 256.0));
 }
 
+// The pipeline's ray-generation shaders (RaygenShader).
+const uint32_t kPixelRaygen = 0;
+const uint32_t kAovRaygen = 1;
+
 // The Vulkan device, pipeline, scene and buffers of one render, kept across passes.
 class GpuRenderer final : public Renderer {
  public:
@@ -61,6 +68,8 @@ class GpuRenderer final : public Renderer {
         seed_(options.seed),
         pass_size_(sampler_pass_size(scene.buffers.globals.sampler_params)) {
     if (width_ == 0 || height_ == 0) throw GpuError("the scene's film has no pixels");
+    if (aov_count_ > 0 && !raygen.aovs)
+      throw GpuError("the scene has AOVs and the ray-generation shader writes none");
     Clock::time_point phase = Clock::now();
     instance_ = std::make_unique<VulkanInstance>();
     const std::vector<DeviceInfo> devices = query_devices(instance_->handle());
@@ -69,9 +78,13 @@ class GpuRenderer final : public Renderer {
     timings_.setup_seconds = seconds_since(phase);
     phase = Clock::now();
     const bool loops = device_info_.cpu || tuning.keep_loops;
-    pipeline_ = std::make_unique<RayTracingPipeline>(*device_, loops ? raygen.cpu : raygen.gpu,
-                                                     loops ? raygen.cpu_bytes : raygen.gpu_bytes,
-                                                     pipeline_features(scene, tuning));
+    auto build = [loops](const SpirvBuilds& b) {
+      return loops ? Spirv{b.cpu, b.cpu_bytes} : Spirv{b.gpu, b.gpu_bytes};
+    };
+    const SceneFeatures features = pipeline_features(scene, tuning);
+    std::vector<Spirv> raygens{build(raygen.pixels)};
+    if (features.aov_types != 0u && raygen.aovs) raygens.push_back(build(*raygen.aovs));
+    pipeline_ = std::make_unique<RayTracingPipeline>(*device_, raygens, features);
     timings_.pipeline_seconds = seconds_since(phase);
     phase = Clock::now();
     batch_bytes_ = pixels_ * sizeof(PixelBatch);
@@ -136,6 +149,11 @@ class GpuRenderer final : public Renderer {
         film.stats.rays += batch[p].rays;
         film.stats.rejected_nonfinite += batch[p].rejected;
       }
+      // The AOV pass counts its camera rays in each pixel's first variable.
+      if (aov_count_ > 0) {
+        const PixelBatch* aovs = static_cast<const PixelBatch*>(slot.aov_readback.mapped());
+        for (size_t p = 0; p < pixels_; ++p) film.stats.rays += aovs[p * aov_count_].rays;
+      }
       merged += slot.sample_count;
       next = (next + 1) % 2;
       --in_flight;
@@ -185,7 +203,8 @@ class GpuRenderer final : public Renderer {
                               1, &set, 0, nullptr);
       vkCmdPushConstants(cmd, pipeline_->layout(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, 0,
                          sizeof(BatchParams), &params);
-      pipeline_->trace(cmd, width_, height_);
+      if (aov_count_ > 0) pipeline_->trace(cmd, kAovRaygen, width_, height_);
+      pipeline_->trace(cmd, kPixelRaygen, width_, height_);
       VkMemoryBarrier barrier{};
       barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
       barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -229,8 +248,10 @@ class GpuRenderer final : public Renderer {
 }  // namespace
 
 RaygenShader renderer_raygen() {
-  return RaygenShader{spirv_raygen, sizeof(spirv_raygen), spirv_raygen_loops,
-                      sizeof(spirv_raygen_loops)};
+  return RaygenShader{
+      SpirvBuilds{spirv_raygen, sizeof(spirv_raygen), spirv_raygen_loops,
+                  sizeof(spirv_raygen_loops)},
+      SpirvBuilds{spirv_aov, sizeof(spirv_aov), spirv_aov_loops, sizeof(spirv_aov_loops)}};
 }
 
 std::unique_ptr<Renderer> make_gpu_renderer(const Scene& scene, const RenderOptions& options) {

@@ -29,7 +29,8 @@ struct GpuTuning {
   // The features the pipeline is specialized for; unset: the scene's own (scene_features),
   // all_features(): the all-features pipeline. They must cover the scene's.
   std::optional<SceneFeatures> features;
-  // The ray-generation shader's build that keeps its loops (RaygenShader::cpu) on every device.
+  // The ray-generation shaders' builds that keep their loops (SpirvBuilds::cpu) on every
+  // device.
   bool keep_loops = false;
 };
 
@@ -43,20 +44,28 @@ struct GpuTimings {
 };
 
 // A ray-generation shader as SPIR-V, in the build for GPUs and the one for CPU devices
-// (lavapipe): the renderer's own keeps its loops there (core/prelude.h UNROLL).
-struct RaygenShader {
+// (lavapipe): the renderer's own keep their loops there (core/prelude.h UNROLL).
+struct SpirvBuilds {
   const uint32_t* gpu;
   size_t gpu_bytes;
   const uint32_t* cpu;
   size_t cpu_bytes;
 };
 
-// shaders/raygen.rgen, both builds.
+// A render's ray-generation shaders: the one that writes each pixel's PixelBatch
+// (shaders/batch.h) and, for scenes with AOVs, the one that writes theirs, dispatched before it
+// over the same samples (unset: the shader renders no AOVs; a scene with some is refused).
+struct RaygenShader {
+  SpirvBuilds pixels;
+  std::optional<SpirvBuilds> aovs;
+};
+
+// shaders/raygen.rgen and shaders/aov.rgen, both builds.
 RaygenShader renderer_raygen();
 
-// A shader with one build for every device (the tests' probes).
+// A shader with one build for every device and no AOVs (the tests' probes).
 inline RaygenShader one_raygen(const uint32_t* spirv, size_t bytes) {
-  return RaygenShader{spirv, bytes, spirv, bytes};
+  return RaygenShader{SpirvBuilds{spirv, bytes, spirv, bytes}, std::nullopt};
 }
 
 // render_gpu with another ray-generation shader writing the same PixelBatch records

@@ -16,7 +16,6 @@ namespace tr {
 
 namespace {
 
-const uint32_t kGroupCount = 5;
 const uint32_t kMissCount = 2;
 const uint32_t kHitGroupCount = 2;
 
@@ -46,9 +45,9 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type, 
 
 }  // namespace
 
-RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen,
-                                       size_t raygen_bytes, const SceneFeatures& features)
-    : device_(device) {
+RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const std::vector<Spirv>& raygens,
+                                       const SceneFeatures& features)
+    : device_(device), raygens_(raygens.size()) {
   VkDevice d = device.handle();
   std::vector<VkShaderModule> modules;
   try {
@@ -84,21 +83,20 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
 
     struct Stage {
       VkShaderStageFlagBits stage;
-      const uint32_t* code;
-      size_t bytes;
+      Spirv spirv;
     };
-    const Stage stages[] = {
-        {VK_SHADER_STAGE_RAYGEN_BIT_KHR, raygen, raygen_bytes},
-        {VK_SHADER_STAGE_MISS_BIT_KHR, spirv_miss, sizeof(spirv_miss)},
-        {VK_SHADER_STAGE_MISS_BIT_KHR, spirv_shadow, sizeof(spirv_shadow)},
-        {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, spirv_hit, sizeof(spirv_hit)},
-        {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, spirv_shape, sizeof(spirv_shape)},
-        {VK_SHADER_STAGE_ANY_HIT_BIT_KHR, spirv_alpha, sizeof(spirv_alpha)},
-    };
+    std::vector<Stage> stages;
+    for (const Spirv& raygen : raygens) stages.push_back({VK_SHADER_STAGE_RAYGEN_BIT_KHR, raygen});
+    const uint32_t R = static_cast<uint32_t>(raygens.size());
+    stages.push_back({VK_SHADER_STAGE_MISS_BIT_KHR, {spirv_miss, sizeof(spirv_miss)}});
+    stages.push_back({VK_SHADER_STAGE_MISS_BIT_KHR, {spirv_shadow, sizeof(spirv_shadow)}});
+    stages.push_back({VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, {spirv_hit, sizeof(spirv_hit)}});
+    stages.push_back({VK_SHADER_STAGE_INTERSECTION_BIT_KHR, {spirv_shape, sizeof(spirv_shape)}});
     // The any-hit stage only where the scene alpha-tests (lavapipe compiles a slower
     // traversal for a pipeline that has one).
     const bool alpha_tested = (features.material_flags & MATERIAL_ALPHA_TESTED) != 0;
-    const uint32_t stage_count = alpha_tested ? 6u : 5u;
+    if (alpha_tested)
+      stages.push_back({VK_SHADER_STAGE_ANY_HIT_BIT_KHR, {spirv_alpha, sizeof(spirv_alpha)}});
     // One uint per constant_id, in SceneFeatures order.
     const uint32_t kConstants = sizeof(SceneFeatures) / sizeof(uint32_t);
     VkSpecializationMapEntry entries[kConstants];
@@ -106,9 +104,8 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
       entries[i] = {i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
     VkSpecializationInfo specialization{kConstants, entries, sizeof(SceneFeatures), &features};
     std::vector<VkPipelineShaderStageCreateInfo> stage_infos;
-    for (uint32_t i = 0; i < stage_count; ++i) {
-      const Stage& s = stages[i];
-      modules.push_back(make_module(d, s.code, s.bytes));
+    for (const Stage& s : stages) {
+      modules.push_back(make_module(d, s.spirv.code, s.spirv.bytes));
       VkPipelineShaderStageCreateInfo info{};
       info.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
       info.stage = s.stage;
@@ -118,21 +115,22 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const uint32_t* ray
       stage_infos.push_back(info);
     }
     const uint32_t U = VK_SHADER_UNUSED_KHR;
-    const VkRayTracingShaderGroupCreateInfoKHR groups[kGroupCount] = {
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, U, U, U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, U, U, U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 2, U, U, U),
-        // Any-hit runs only on non-opaque (alpha-tested) triangle geometries.
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, 3, alpha_tested ? 5 : U,
-              U),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, 3, U, 4),
-    };
+    std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+    for (uint32_t i = 0; i < R; ++i)
+      groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, i, U, U, U));
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, R, U, U, U));
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, R + 1, U, U, U));
+    // Any-hit runs only on non-opaque (alpha-tested) triangle geometries.
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, R + 2,
+                           alpha_tested ? R + 4 : U, U));
+    groups.push_back(
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, R + 2, U, R + 3));
     VkRayTracingPipelineCreateInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;
     info.stageCount = static_cast<uint32_t>(stage_infos.size());
     info.pStages = stage_infos.data();
-    info.groupCount = kGroupCount;
-    info.pGroups = groups;
+    info.groupCount = static_cast<uint32_t>(groups.size());
+    info.pGroups = groups.data();
     info.maxPipelineRayRecursionDepth = 1;
     info.layout = layout_;
     vk_check(device.rt().create_ray_tracing_pipelines(d, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info,
@@ -156,26 +154,30 @@ void RayTracingPipeline::build_sbt() {
   const VkDeviceSize handle = props.shaderGroupHandleSize;
   const VkDeviceSize record = align_up(handle, props.shaderGroupHandleAlignment);
   const VkDeviceSize base = props.shaderGroupBaseAlignment;
-  raygen_.stride = align_up(record, base);
-  raygen_.size = raygen_.stride;
+  const uint32_t R = static_cast<uint32_t>(raygens_.size());
+  const uint32_t group_count = R + kMissCount + kHitGroupCount;
+  // Each ray-generation record is a region of its own, starting base-aligned.
+  const VkDeviceSize raygen_size = align_up(record, base);
+  for (VkStridedDeviceAddressRegionKHR& r : raygens_) r.stride = r.size = raygen_size;
+  const VkDeviceSize raygen_bytes = R * raygen_size;
   miss_.stride = record;
   miss_.size = align_up(kMissCount * record, base);
   hit_.stride = record;
   hit_.size = align_up(kHitGroupCount * record, base);
 
-  std::vector<uint8_t> handles(kGroupCount * handle);
-  vk_check(device_.rt().get_shader_group_handles(device_.handle(), pipeline_, 0, kGroupCount,
+  std::vector<uint8_t> handles(group_count * handle);
+  vk_check(device_.rt().get_shader_group_handles(device_.handle(), pipeline_, 0, group_count,
                                                  handles.size(), handles.data()),
            "vkGetRayTracingShaderGroupHandlesKHR");
-  const VkDeviceSize total = raygen_.size + miss_.size + hit_.size;
+  const VkDeviceSize total = raygen_bytes + miss_.size + hit_.size;
   std::vector<uint8_t> table(total, 0);
   auto put = [&](uint32_t group_index, VkDeviceSize offset) {
     std::memcpy(table.data() + offset, handles.data() + group_index * handle, handle);
   };
-  put(0, 0);
-  for (uint32_t i = 0; i < kMissCount; ++i) put(1 + i, raygen_.size + i * record);
+  for (uint32_t i = 0; i < R; ++i) put(i, i * raygen_size);
+  for (uint32_t i = 0; i < kMissCount; ++i) put(R + i, raygen_bytes + i * record);
   for (uint32_t i = 0; i < kHitGroupCount; ++i)
-    put(1 + kMissCount + i, raygen_.size + miss_.size + i * record);
+    put(R + kMissCount + i, raygen_bytes + miss_.size + i * record);
 
   // The table's own start must be base-aligned too: over-allocate and offset.
   std::vector<uint8_t> padded(total + base, 0);
@@ -194,14 +196,16 @@ void RayTracingPipeline::build_sbt() {
   });
   sbt_ = std::move(sbt);
   VkDeviceAddress start = sbt_.address() + shift;
-  raygen_.deviceAddress = start;
-  miss_.deviceAddress = start + raygen_.size;
-  hit_.deviceAddress = start + raygen_.size + miss_.size;
+  for (uint32_t i = 0; i < R; ++i) raygens_[i].deviceAddress = start + i * raygen_size;
+  miss_.deviceAddress = start + raygen_bytes;
+  hit_.deviceAddress = start + raygen_bytes + miss_.size;
 }
 
-void RayTracingPipeline::trace(VkCommandBuffer cmd, uint32_t width, uint32_t height) const {
+void RayTracingPipeline::trace(VkCommandBuffer cmd, uint32_t raygen, uint32_t width,
+                               uint32_t height) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_);
-  device_.rt().cmd_trace_rays(cmd, &raygen_, &miss_, &hit_, &callable_, width, height, 1);
+  device_.rt().cmd_trace_rays(cmd, &raygens_.at(raygen), &miss_, &hit_, &callable_, width, height,
+                              1);
 }
 
 RayTracingPipeline::~RayTracingPipeline() { destroy(); }

@@ -1,11 +1,15 @@
 // The ray-tracing pipeline and its shader binding table.
-//   groups: 0 raygen | 1 miss (closest query) | 2 miss (occlusion query)
-//           3 triangle hit group (closest hit; any-hit shaders/alpha.rahit only in a scene
-//           that alpha-tests) | 4 procedural hit group (intersection + closest hit), matching
-//           HIT_GROUP_TRIANGLES / HIT_GROUP_PROCEDURAL.
+//   groups: 0 … R-1 the R ray-generation shaders | R miss (closest query) | R+1 miss
+//           (occlusion query) | R+2 triangle hit group (closest hit; any-hit
+//           shaders/alpha.rahit only in a scene that alpha-tests) | R+3 procedural hit group
+//           (intersection + closest hit), matching HIT_GROUP_TRIANGLES / HIT_GROUP_PROCEDURAL.
 // Set 0 holds the bindings of core/bindings.h; the push constants are a BatchParams; every
 // stage is specialized with the scene's feature masks (shaders/features.glsl).
 #pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "gpu_backend/vk_device.h"
 #include "gpu_backend/vulkan_api.h"
@@ -13,10 +17,16 @@
 
 namespace tr {
 
+struct Spirv {
+  const uint32_t* code;
+  size_t bytes;
+};
+
 class RayTracingPipeline {
  public:
-  // raygen: SPIR-V of the ray-generation shader (shaders/raygen.rgen for renders).
-  RayTracingPipeline(VulkanDevice& device, const uint32_t* raygen, size_t raygen_bytes,
+  // raygens: the ray-generation shaders (shaders/raygen.rgen and shaders/aov.rgen for
+  // renders); each dispatch runs one of them.
+  RayTracingPipeline(VulkanDevice& device, const std::vector<Spirv>& raygens,
                      const SceneFeatures& features);
   ~RayTracingPipeline();
   RayTracingPipeline(const RayTracingPipeline&) = delete;
@@ -26,8 +36,9 @@ class RayTracingPipeline {
   VkPipelineLayout layout() const { return layout_; }
   VkPipeline pipeline() const { return pipeline_; }
 
-  // vkCmdBindPipeline + vkCmdTraceRaysKHR over width x height.
-  void trace(VkCommandBuffer cmd, uint32_t width, uint32_t height) const;
+  // vkCmdBindPipeline + vkCmdTraceRaysKHR of ray-generation shader `raygen` over
+  // width x height.
+  void trace(VkCommandBuffer cmd, uint32_t raygen, uint32_t width, uint32_t height) const;
 
  private:
   void destroy();
@@ -37,7 +48,8 @@ class RayTracingPipeline {
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   Buffer sbt_;
-  VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
+  std::vector<VkStridedDeviceAddressRegionKHR> raygens_;
+  VkStridedDeviceAddressRegionKHR miss_{}, hit_{}, callable_{};
 };
 
 }  // namespace tr
