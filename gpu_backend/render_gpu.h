@@ -44,7 +44,7 @@ struct GpuTimings {
 };
 
 // A ray-generation shader as SPIR-V, in the build for GPUs and the one for CPU devices
-// (lavapipe): the renderer's own keep their loops there (core/prelude.h UNROLL).
+// (lavapipe): the renderer's shaders keep their loops there (core/prelude.h UNROLL).
 struct SpirvBuilds {
   const uint32_t* gpu;
   size_t gpu_bytes;
