@@ -86,6 +86,7 @@ class GpuRenderer final : public Renderer {
     if (features.aov_types != 0u && raygen.aovs) raygens.push_back(build(*raygen.aovs));
     pipeline_ = std::make_unique<RayTracingPipeline>(*device_, raygens, features);
     timings_.pipeline_seconds = seconds_since(phase);
+    timings_.raygen_stack_bytes = pipeline_->raygen_stack_size(kPixelRaygen);
     phase = Clock::now();
     batch_bytes_ = pixels_ * sizeof(PixelBatch);
     batches_ = Buffer(*device_, batch_bytes_,

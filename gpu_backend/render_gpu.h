@@ -41,6 +41,7 @@ struct GpuTimings {
   double render_seconds = 0.0;          // dispatches and batch merging
   double first_dispatch_seconds = 0.0;  // part of render_seconds; lavapipe compiles here
   uint32_t first_dispatch_spp = 0;
+  uint64_t raygen_stack_bytes = 0;  // the path shader's (RayTracingPipeline::raygen_stack_size)
 };
 
 // A ray-generation shader as SPIR-V, in the build for GPUs and the one for CPU devices

@@ -208,6 +208,11 @@ void RayTracingPipeline::trace(VkCommandBuffer cmd, uint32_t raygen, uint32_t wi
                               1);
 }
 
+VkDeviceSize RayTracingPipeline::raygen_stack_size(uint32_t raygen) const {
+  return device_.rt().get_shader_group_stack_size(device_.handle(), pipeline_, raygen,
+                                                  VK_SHADER_GROUP_SHADER_GENERAL_KHR);
+}
+
 RayTracingPipeline::~RayTracingPipeline() { destroy(); }
 
 void RayTracingPipeline::destroy() {

@@ -36,6 +36,10 @@ class RayTracingPipeline {
   VkPipelineLayout layout() const { return layout_; }
   VkPipeline pipeline() const { return pipeline_; }
 
+  // The stack (bytes) the driver reserves for ray-generation shader `raygen`: its live state
+  // kept across traceRayEXT, spills and local arrays (vkGetRayTracingShaderGroupStackSizeKHR).
+  VkDeviceSize raygen_stack_size(uint32_t raygen) const;
+
   // vkCmdBindPipeline + vkCmdTraceRaysKHR of ray-generation shader `raygen` over
   // width x height.
   void trace(VkCommandBuffer cmd, uint32_t raygen, uint32_t width, uint32_t height) const;

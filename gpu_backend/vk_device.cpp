@@ -68,6 +68,7 @@ VulkanDevice::VulkanDevice(VulkanInstance& instance, const DeviceInfo& info)
     load(device_, rt_.create_ray_tracing_pipelines, "vkCreateRayTracingPipelinesKHR");
     load(device_, rt_.get_shader_group_handles, "vkGetRayTracingShaderGroupHandlesKHR");
     load(device_, rt_.cmd_trace_rays, "vkCmdTraceRaysKHR");
+    load(device_, rt_.get_shader_group_stack_size, "vkGetRayTracingShaderGroupStackSizeKHR");
   } catch (...) {
     destroy();
     throw;

@@ -22,6 +22,7 @@ struct RayTracingFunctions {
   PFN_vkCreateRayTracingPipelinesKHR create_ray_tracing_pipelines;
   PFN_vkGetRayTracingShaderGroupHandlesKHR get_shader_group_handles;
   PFN_vkCmdTraceRaysKHR cmd_trace_rays;
+  PFN_vkGetRayTracingShaderGroupStackSizeKHR get_shader_group_stack_size;
 };
 
 class VulkanDevice {

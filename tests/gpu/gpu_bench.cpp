@@ -165,13 +165,13 @@ int main(int argc, char** argv) {
     std::printf(
         "%s | %ux%u, %u spp, %s pipeline | setup %.3f s, pipeline %.3f s, AS build %.3f s, "
         "render %.3f s (first dispatch, %u spp: %.3f s) | %.2f Msamples/s, after the first "
-        "dispatch %.2f Msamples/s, %.2f Mrays/s, %llu rejected\n",
+        "dispatch %.2f Msamples/s, %.2f Mrays/s, %llu rejected | ray-generation stack %llu B\n",
         r.device.c_str(), r.width, r.height, r.spp, pipeline.c_str(), t.setup_seconds,
         t.pipeline_seconds, t.build_seconds, t.render_seconds, t.first_dispatch_spp,
         t.first_dispatch_seconds, double(r.stats.samples) / t.render_seconds * 1e-6,
         steady_seconds > 0.0 ? steady_samples / steady_seconds * 1e-6 : 0.0,
         double(r.stats.rays) / t.render_seconds * 1e-6,
-        (unsigned long long)r.stats.rejected_nonfinite);
+        (unsigned long long)r.stats.rejected_nonfinite, (unsigned long long)t.raygen_stack_bytes);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "gpu_bench: %s\n", e.what());
