@@ -1,7 +1,8 @@
 // Mitsuba's `aov` integrator on the GPU (lavapipe in CI): the closed-form AOVs of a sphere, every
 // AOV channel of validation/mitsuba/plugins/aov.xml against Mitsuba 3.8's reference
-// (aov_reference_check.h), and CPU <-> GPU lockstep of every AOV channel and the colour at 16
-// spp (same seed: the same camera rays up to float rounding).
+// (aov_reference_check.h), CPU <-> GPU lockstep of every AOV channel and the colour at 16 spp
+// (same seed: the same camera rays up to float rounding), and the refusal of ray-generation
+// shaders without the AOV one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "aov_reference_check.h"
 #include "aov_sphere_check.h"
 #include "cpu_backend/render_cpu.h"
+#include "gpu_backend/gpu_error.h"
 #include "gpu_backend/render_gpu.h"
 
 namespace tr {
@@ -21,6 +23,15 @@ TEST(AovGpu, SphereMatchesClosedForm) {
   options.seed = 7;
   RenderResult r = render_gpu(scene, options);
   test::expect_aov_sphere(scene, r, 1e-5);
+}
+
+// The AOVs are a ray-generation shader of their own (shaders/aov.rgen); a render whose shaders
+// lack it cannot write a scene's AOVs and must say so rather than leave them empty.
+TEST(AovGpu, ShadersWithoutTheAovShaderAreRefused) {
+  Scene scene = load_scene(std::string(TWINRAY_CPU_TEST_SCENES) + "/aov_sphere.xml", {});
+  RaygenShader without_aovs = renderer_raygen();
+  without_aovs.aovs.reset();
+  EXPECT_THROW(render_with_raygen(scene, RenderOptions(), without_aovs), GpuError);
 }
 
 TEST(AovGpu, ChannelsMatchMitsuba) {
