@@ -28,7 +28,6 @@ layout(constant_id = 9) const uint SPEC_EMITTER_SELECTIONS = 0xffffffffu;
 #define TR_HAS_MATERIAL_FLAG(flag) ((SPEC_MATERIAL_FLAGS & (flag)) != 0u)
 #define TR_HAS_INTEGRATOR(type) ((SPEC_INTEGRATOR_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_AOV(type) ((SPEC_AOV_TYPES & (1u << (type))) != 0u)
-#define TR_HAS_AOVS (SPEC_AOV_TYPES != 0u)
 #define TR_HAS_SAMPLER(type) ((SPEC_SAMPLER_TYPES & (1u << (type))) != 0u)
 #define TR_HAS_TEXTURED_SLOT(k) ((SPEC_TEXTURED_SLOTS & (1u << (k))) != 0u)
 #define TR_HAS_EMITTER_SELECTION(s) ((SPEC_EMITTER_SELECTIONS & (1u << (s))) != 0u)
