@@ -11,7 +11,7 @@
 // and divides by zero, here child 0 is taken.
 //
 // Children are materials referred to by index (BLEND_BSDF_0/1), so blends nest; GLSL has no
-// recursion, so the tree is walked with an explicit stack. Unrolling Mitsuba's recursive
+// recursion, so the tree is walked by loops (blend_leaf, blend_next). Unrolling Mitsuba's recursive
 // mixture, every leaf (a non-blend material) j enters with the product W_j of the weights on
 // its path; the sampled leaf L contributes W_L (value_L, pdf_L), every other leaf
 // W_j (eval_j(wo), pdf_j(wo)). A `twosided` on a blend applies to every leaf below it (it is
@@ -28,10 +28,6 @@
 
 TR_NAMESPACE_BEGIN
 
-// A tree of at most BLEND_MAX_DEPTH levels of blends (the loader enforces it) keeps the
-// depth-first walk within BLEND_STACK_SIZE = BLEND_MAX_DEPTH + 1 entries.
-const uint BLEND_STACK_SIZE = BLEND_MAX_DEPTH + 1u;
-
 INLINE float blend_weight(IN(Material) m, TexCoord uv) {
   return clamp(eval_textured_1(m.param[BLEND_WEIGHT], uv), 0.0f, 1.0f);
 }
@@ -40,95 +36,81 @@ INLINE uint blend_child(IN(Material) m, uint which) {
   return uint(m.param[which == 0u ? BLEND_BSDF_0 : BLEND_BSDF_1].value.x);
 }
 
-// The depth-first walk: a node's material index, the product of the blend weights on its path,
-// its path code (1 for the root, 2 code + child below), and the inherited `twosided` flag.
-struct BlendStack {
-  uint node[BLEND_STACK_SIZE];
-  float weight[BLEND_STACK_SIZE];
-  uint path[BLEND_STACK_SIZE];
-  uint flags[BLEND_STACK_SIZE];
-  uint size;
-};
-
-INLINE void blend_push(INOUT(BlendStack) st, uint node, float weight, uint path, uint flags) {
-  st.node[st.size] = node;
-  st.weight[st.size] = weight;
-  st.path[st.size] = path;
-  st.flags[st.size] = flags;
-  st.size += 1u;
-}
-
-INLINE void blend_push_children(INOUT(BlendStack) st, IN(Material) blend, TexCoord uv, float weight,
-                                uint path, uint inherited_flags) {
-  // The loader bounds the nesting depth (BLEND_MAX_DEPTH), so the stack never overflows.
-  if (st.size + 2u > BLEND_STACK_SIZE) return;
-  float w = blend_weight(blend, uv);
-  uint flags = inherited_flags | (blend.flags & MATERIAL_TWOSIDED);
-  blend_push(st, blend_child(blend, 0u), weight * (1.0f - w), 2u * path, flags);
-  blend_push(st, blend_child(blend, 1u), weight * w, 2u * path + 1u, flags);
-}
-
-INLINE BlendStack blend_walk(IN(Material) root, TexCoord uv) {
-  BlendStack st;
-  st.size = 0u;
-  blend_push_children(st, root, uv, 1.0f, 1u, 0u);
-  return st;
-}
-
-// Pops entries until a leaf comes up, expanding blends on the way; false when the walk is over.
-INLINE bool blend_next_leaf(INOUT(BlendStack) st, TexCoord uv, OUT(Material) leaf,
-                            OUT(float) weight, OUT(uint) path) {
-  while (st.size > 0u) {
-    st.size -= 1u;
-    Material m = scene_material(st.node[st.size]);
-    m.flags |= st.flags[st.size];
-    if (m.type == BSDF_BLEND) {
-      blend_push_children(st, m, uv, st.weight[st.size], st.path[st.size], st.flags[st.size]);
-      continue;
+// A node of the tree is named by its path code: 1 for the root, 2 code + k for its child k. The
+// walks visit the leaves depth first, child 1 before child 0, without a stack: a leaf is found
+// from the root by its code, and the next code follows from the last (no array, so a GPU keeps
+// the walk in registers).
+//
+// The leaf at `path` or, when that node is a blend, below it through child 1 at each level
+// (path is extended to the leaf's code). Its weight is the product of the weights met from the
+// root, its flags carry the `twosided` of any blend above it.
+INLINE Material blend_leaf(IN(Material) root, TexCoord uv, INOUT(uint) path, OUT(float) weight) {
+  Material node = root;
+  uint twosided = 0u;
+  int level = findMSB(path);  // bits of path below its leading 1 still to follow
+  weight = 1.0f;
+  for (uint depth = 0u; depth < BLEND_MAX_DEPTH && node.type == BSDF_BLEND; ++depth) {
+    uint child = 1u;
+    if (level > 0) {
+      level -= 1;
+      child = (path >> uint(level)) & 1u;
+    } else {
+      path = 2u * path + 1u;
     }
-    leaf = m;
-    weight = st.weight[st.size];
-    path = st.path[st.size];
-    return true;
+    float w = blend_weight(node, uv);
+    weight *= child == 1u ? w : 1.0f - w;
+    twosided |= node.flags & MATERIAL_TWOSIDED;
+    node = scene_material(blend_child(node, child));
   }
-  return false;
+  node.flags |= twosided;
+  return node;
+}
+
+// The code of the walk's next node after the leaf at `path` (climb over child-0 steps, then take
+// the child 0 beside the last child 1), or 1 (the root) when that leaf was the last.
+INLINE uint blend_next(uint path) {
+  while ((path & 1u) == 0u) path >>= 1u;
+  return path == 1u ? 1u : path - 1u;
 }
 
 // Mitsuba's m_flags: the union of the children's flags, whatever the weight.
 INLINE uint blend_flags(IN(Material) m, TexCoord uv) {
-  BlendStack st = blend_walk(m, uv);
-  Material leaf;
-  float weight;
-  uint path;
   uint flags = 0u;
-  while (blend_next_leaf(st, uv, leaf, weight, path)) flags |= bsdf_leaf_flags(leaf, uv);
+  uint path = 1u;
+  do {
+    float weight;
+    flags |= bsdf_leaf_flags(blend_leaf(m, uv, path, weight), uv);
+    path = blend_next(path);
+  } while (path != 1u);
   return flags;
 }
 
 // blendbsdf.cpp's eval_diffuse_reflectance: (1 - w) first + w second, recursively.
 INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
-  BlendStack st = blend_walk(m, uv);
-  Material leaf;
-  float weight;
-  uint path;
   vec3 value = vec3(0.0f);
-  while (blend_next_leaf(st, uv, leaf, weight, path))
+  uint path = 1u;
+  do {
+    float weight;
+    Material leaf = blend_leaf(m, uv, path, weight);
     if (weight > 0.0f) value += weight * bsdf_leaf_diffuse_reflectance(leaf, uv, wi);
+    path = blend_next(path);
+  } while (path != 1u);
   return value;
 }
 
 INLINE BsdfEvalPdf blend_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
-  BlendStack st = blend_walk(m, uv);
-  Material leaf;
-  float weight;
-  uint path;
   BsdfEvalPdf sum = bsdf_eval_pdf_zero();
-  while (blend_next_leaf(st, uv, leaf, weight, path)) {
-    if (!(weight > 0.0f)) continue;
-    BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, wo);
-    sum.f += weight * v.f;
-    sum.pdf += weight * v.pdf;
-  }
+  uint path = 1u;
+  do {
+    float weight;
+    Material leaf = blend_leaf(m, uv, path, weight);
+    if (weight > 0.0f) {
+      BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, wo);
+      sum.f += weight * v.f;
+      sum.pdf += weight * v.pdf;
+    }
+    path = blend_next(path);
+  } while (path != 1u);
   return sum;
 }
 
@@ -165,16 +147,17 @@ INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, v
   }
   vec3 value = chosen_weight * s.weight * s.pdf;
   float pdf = chosen_weight * s.pdf;
-  BlendStack st = blend_walk(m, uv);
-  Material leaf;
-  float weight;
-  uint path;
-  while (blend_next_leaf(st, uv, leaf, weight, path)) {
-    if (path == chosen_path || !(weight > 0.0f)) continue;
-    BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, s.wo);
-    value += weight * v.f;
-    pdf += weight * v.pdf;
-  }
+  uint path = 1u;
+  do {
+    float weight;
+    Material leaf = blend_leaf(m, uv, path, weight);
+    if (path != chosen_path && weight > 0.0f) {
+      BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, s.wo);
+      value += weight * v.f;
+      pdf += weight * v.pdf;
+    }
+    path = blend_next(path);
+  } while (path != 1u);
   s.pdf = pdf;
   s.weight = value / pdf;
   return s;
