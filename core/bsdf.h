@@ -245,8 +245,16 @@ TR_NAMESPACE_END
 TR_NAMESPACE_BEGIN
 
 INLINE uint bsdf_tree_flags(IN(Material) m, TexCoord uv) {
-  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return blend_flags(m, uv);
+  if (TR_HAS_BSDF(BSDF_BLEND) && m.type == BSDF_BLEND) return m.lobes;
   return bsdf_leaf_flags(m, uv);
+}
+
+// Mitsuba's blendbsdf m_flags, the union of its children's flags whatever the weight, set by its
+// constructor: a blend's Material.lobes, set when the blend is built. No BSDF's flags depend on
+// the position.
+INLINE uint blend_lobes(IN(Material) child_0, IN(Material) child_1) {
+  TexCoord uv = tex_coord(vec2(0.0f));
+  return bsdf_tree_flags(child_0, uv) | bsdf_tree_flags(child_1, uv);
 }
 
 INLINE BsdfEvalPdf bsdf_tree_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {

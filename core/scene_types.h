@@ -79,7 +79,7 @@ struct Material {
   TexturedValue opacity;  // opacity of MATERIAL_MASKED or MATERIAL_ALPHA_TESTED
   TexturedValue param[MATERIAL_PARAM_COUNT];
   float alpha_cutoff;  // MATERIAL_ALPHA_TESTED: the surface is absent where opacity < alpha_cutoff
-  uint pad0;
+  uint lobes;  // BSDF_BLEND: the union of its leaves' BSDF_* lobes (core/bsdf.h, blend_lobes)
   uint pad1;
   uint pad2;
 };

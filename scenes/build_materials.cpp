@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <tuple>
 
-#include "core/bsdf/roughplastic.h"
+#include "core/bsdf.h"
 #include "core/material_slots.h"
 #include "scenes/bitmap.h"
 #include "scenes/ior.h"
@@ -35,7 +35,7 @@ Material empty_material(uint type) {
   m.opacity = constant_value(glm::dvec3(1.0));
   for (uint i = 0; i < MATERIAL_PARAM_COUNT; ++i) m.param[i] = constant_value(glm::dvec3(0.0));
   m.alpha_cutoff = 0.0f;
-  m.pad0 = m.pad1 = m.pad2 = 0u;
+  m.lobes = m.pad1 = m.pad2 = 0u;
   return m;
 }
 
@@ -536,6 +536,7 @@ Material SceneBuilder::build_material(Node& n) {
     m.param[BLEND_WEIGHT] = textured(n, "weight", glm::dvec3(0.5), true);
     m.param[BLEND_BSDF_0] = constant_value(glm::dvec3(material(*inner[0]->object)));
     m.param[BLEND_BSDF_1] = constant_value(glm::dvec3(material(*inner[1]->object)));
+    m.lobes = blend_lobes(b_.materials[blend_child(m, 0u)], b_.materials[blend_child(m, 1u)]);
     for (uint slot : {BLEND_BSDF_0, BLEND_BSDF_1})
       if (b_.materials[uint(m.param[slot].value.x)].type == BSDF_NORMALMAP)
         fail(n.loc, describe(n), ": a normalmap inside a blendbsdf is not supported");

@@ -73,18 +73,6 @@ INLINE uint blend_next(uint path) {
   return path == 1u ? 1u : path - 1u;
 }
 
-// Mitsuba's m_flags: the union of the children's flags, whatever the weight.
-INLINE uint blend_flags(IN(Material) m, TexCoord uv) {
-  uint flags = 0u;
-  uint path = 1u;
-  do {
-    float weight;
-    flags |= bsdf_leaf_flags(blend_leaf(m, uv, path, weight), uv);
-    path = blend_next(path);
-  } while (path != 1u);
-  return flags;
-}
-
 // blendbsdf.cpp's eval_diffuse_reflectance: (1 - w) first + w second, recursively.
 INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
   vec3 value = vec3(0.0f);

@@ -2,6 +2,7 @@
 // records they build and the scenes Mitsuba refuses.
 #include <gtest/gtest.h>
 
+#include "core/bsdf/common.h"
 #include "core/material_slots.h"
 #include "scene_test_files.h"
 
@@ -44,6 +45,7 @@ TEST(BlendBsdf, ChildrenInOrderAndScalarWeight) {
   ASSERT_EQ(m.type, BSDF_BLEND);
   EXPECT_EQ(child(s, m, BLEND_BSDF_0).type, BSDF_DIFFUSE);
   EXPECT_EQ(child(s, m, BLEND_BSDF_1).type, BSDF_CONDUCTOR);
+  EXPECT_EQ(m.lobes, BSDF_DIFFUSE_REFLECTION | BSDF_DELTA_REFLECTION);
   // eval_1 of a constant color is its channel mean.
   EXPECT_FLOAT_EQ(m.param[BLEND_WEIGHT].value.x, 0.3f);
   EXPECT_EQ(m.param[BLEND_WEIGHT].texture, NO_INDEX);
@@ -62,6 +64,18 @@ TEST(BlendBsdf, TexturedWeightAndNesting) {
   ASSERT_EQ(inner.type, BSDF_BLEND);
   EXPECT_FLOAT_EQ(inner.param[BLEND_WEIGHT].value.x, 0.25f);
   EXPECT_EQ(child(s, inner, BLEND_BSDF_1).type, BSDF_CONDUCTOR);
+  // Mitsuba's m_flags, whatever the weights: the union down the tree.
+  EXPECT_EQ(inner.lobes, BSDF_DIFFUSE_REFLECTION | BSDF_DELTA_REFLECTION);
+  EXPECT_EQ(m.lobes, BSDF_DIFFUSE_REFLECTION | BSDF_DELTA_REFLECTION);
+}
+
+TEST(BlendBsdf, LobesOfMaskedAndTransmittingLeaves) {
+  Scene s = load_bsdf(
+      "<bsdf type=\"blendbsdf\"><float name=\"weight\" value=\"0\"/><bsdf type=\"mask\">" +
+      kDiffuse + "</bsdf><bsdf type=\"blendbsdf\"><float name=\"weight\" value=\"1\"/>" +
+      kConductor + "<bsdf type=\"roughdielectric\"/></bsdf></bsdf>");
+  EXPECT_EQ(shape_material(s).lobes, BSDF_DIFFUSE_REFLECTION | BSDF_NULL | BSDF_DELTA_REFLECTION |
+                                         BSDF_GLOSSY_REFLECTION | BSDF_GLOSSY_TRANSMISSION);
 }
 
 TEST(BlendBsdf, MitsubaRefusals) {

@@ -193,6 +193,7 @@ Material blend(const Material& bsdf_0, const Material& bsdf_1, float weight) {
   m.param[BLEND_WEIGHT] = constant(vec3(weight));
   m.param[BLEND_BSDF_0] = constant(vec3(float(add_material(bsdf_0))));
   m.param[BLEND_BSDF_1] = constant(vec3(float(add_material(bsdf_1))));
+  m.lobes = blend_lobes(bsdf_0, bsdf_1);
   return m;
 }
 
