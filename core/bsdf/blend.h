@@ -32,38 +32,63 @@ INLINE float blend_weight(IN(Material) m, TexCoord uv) {
   return clamp(eval_textured_1(m.param[BLEND_WEIGHT], uv), 0.0f, 1.0f);
 }
 
+// Both slots read at constant indices: a record's array member indexed by a variable is copied
+// whole into a GPU's local memory first.
 INLINE uint blend_child(IN(Material) m, uint which) {
-  return uint(m.param[which == 0u ? BLEND_BSDF_0 : BLEND_BSDF_1].value.x);
+  uint child_0 = uint(m.param[BLEND_BSDF_0].value.x);
+  uint child_1 = uint(m.param[BLEND_BSDF_1].value.x);
+  return which == 0u ? child_0 : child_1;
 }
 
 // A node of the tree is named by its path code: 1 for the root, 2 code + k for its child k. The
 // walks visit the leaves depth first, child 1 before child 0, without a stack: a leaf is found
-// from the root by its code, and the next code follows from the last (no array, so a GPU keeps
-// the walk in registers).
+// from the root by its code, and the next code follows from the last. The loops carry material
+// indices, not records: a GPU then keeps a walk in registers.
 //
-// The leaf at `path` or, when that node is a blend, below it through child 1 at each level
-// (path is extended to the leaf's code). Its weight is the product of the weights met from the
-// root, its flags carry the `twosided` of any blend above it.
-INLINE Material blend_leaf(IN(Material) root, TexCoord uv, INOUT(uint) path, OUT(float) weight) {
-  Material node = root;
-  uint twosided = 0u;
-  int level = findMSB(path);  // bits of path below its leading 1 still to follow
-  weight = 1.0f;
-  for (uint depth = 0u; depth < BLEND_MAX_DEPTH && node.type == BSDF_BLEND; ++depth) {
-    uint child = 1u;
-    if (level > 0) {
-      level -= 1;
-      child = (path >> uint(level)) & 1u;
-    } else {
-      path = 2u * path + 1u;
-    }
-    float w = blend_weight(node, uv);
-    weight *= child == 1u ? w : 1.0f - w;
-    twosided |= node.flags & MATERIAL_TWOSIDED;
-    node = scene_material(blend_child(node, child));
+// One level down from `node`, a blend of weight w, to its child `child`: the path's weight and
+// inherited `twosided` updated, the child's material index returned.
+INLINE uint blend_step(IN(Material) node, float w, uint child, INOUT(float) weight,
+                       INOUT(uint) twosided) {
+  weight *= child == 1u ? w : 1.0f - w;
+  twosided |= node.flags & MATERIAL_TWOSIDED;
+  return blend_child(node, child);
+}
+
+// The child to take at the next level: path's next bit (level counts the bits left below its
+// leading 1) or, past its end, child 1, path extended by it.
+INLINE uint blend_path_child(INOUT(uint) path, INOUT(int) level) {
+  if (level > 0) {
+    level -= 1;
+    return (path >> uint(level)) & 1u;
   }
-  node.flags |= twosided;
-  return node;
+  path = 2u * path + 1u;
+  return 1u;
+}
+
+// The leaf at `path` below the blend `root` or, when that node is a blend, below it through
+// child 1 at each level (path is extended to the leaf's code): its material index, the product
+// of the weights met from the root, and the `twosided` of any blend above it.
+INLINE uint blend_leaf(IN(Material) root, TexCoord uv, INOUT(uint) path, OUT(float) weight,
+                       OUT(uint) twosided) {
+  int level = findMSB(path);
+  weight = 1.0f;
+  twosided = 0u;
+  uint index =
+      blend_step(root, blend_weight(root, uv), blend_path_child(path, level), weight, twosided);
+  for (uint depth = 1u; depth < BLEND_MAX_DEPTH && scene_material(index).type == BSDF_BLEND;
+       ++depth) {
+    REF(Material) node = scene_material(index);
+    index =
+        blend_step(node, blend_weight(node, uv), blend_path_child(path, level), weight, twosided);
+  }
+  return index;
+}
+
+// The leaf's record with the `twosided` of the blends above it.
+INLINE Material blend_leaf_material(uint index, uint twosided) {
+  Material leaf = scene_material(index);
+  leaf.flags |= twosided;
+  return leaf;
 }
 
 // The code of the walk's next node after the leaf at `path` (climb over child-0 steps, then take
@@ -79,8 +104,10 @@ INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
   uint path = 1u;
   do {
     float weight;
-    Material leaf = blend_leaf(m, uv, path, weight);
-    if (weight > 0.0f) value += weight * bsdf_leaf_diffuse_reflectance(leaf, uv, wi);
+    uint twosided;
+    uint leaf = blend_leaf(m, uv, path, weight, twosided);
+    if (weight > 0.0f)
+      value += weight * bsdf_leaf_diffuse_reflectance(blend_leaf_material(leaf, twosided), uv, wi);
     path = blend_next(path);
   } while (path != 1u);
   return value;
@@ -91,9 +118,10 @@ INLINE BsdfEvalPdf blend_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo)
   uint path = 1u;
   do {
     float weight;
-    Material leaf = blend_leaf(m, uv, path, weight);
+    uint twosided;
+    uint leaf = blend_leaf(m, uv, path, weight, twosided);
     if (weight > 0.0f) {
-      BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, wo);
+      BsdfEvalPdf v = bsdf_leaf_eval_pdf(blend_leaf_material(leaf, twosided), uv, wi, wo);
       sum.f += weight * v.f;
       sum.pdf += weight * v.pdf;
     }
@@ -102,30 +130,28 @@ INLINE BsdfEvalPdf blend_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo)
   return sum;
 }
 
+// One level of blend_sample's descent: child 1 when u1 <= w (as Mitsuba), u1 rescaled to the
+// chosen child's share and kept below 1 so that leaves see a sample in [0, 1).
+INLINE uint blend_choose(IN(Material) node, TexCoord uv, INOUT(float) u1, INOUT(float) weight,
+                         INOUT(uint) path, INOUT(uint) twosided) {
+  float w = blend_weight(node, uv);
+  uint child = (u1 <= w && w > 0.0f) ? 1u : 0u;
+  u1 = min(child == 1u ? u1 / w : (u1 - w) / (1.0f - w), ONE_MINUS_EPSILON);
+  path = 2u * path + child;
+  return blend_step(node, w, child, weight, twosided);
+}
+
 INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, vec2 u2) {
-  // Descend to one leaf, reusing u1 at each blend (child 1 when u1 <= w, as Mitsuba; the
-  // rescaled u1 stays below 1 so that leaves see a sample in [0, 1)).
-  Material node = m;
+  // Descend to one leaf, reusing u1 at each blend.
   float chosen_weight = 1.0f;
   uint chosen_path = 1u;
-  uint inherited = 0u;
-  for (uint depth = 0u; depth < BLEND_MAX_DEPTH && node.type == BSDF_BLEND; ++depth) {
-    float w = blend_weight(node, uv);
-    inherited |= node.flags & MATERIAL_TWOSIDED;
-    uint child = (u1 <= w && w > 0.0f) ? 1u : 0u;
-    if (child == 1u) {
-      u1 = u1 / w;
-      chosen_weight *= w;
-    } else {
-      u1 = (u1 - w) / (1.0f - w);
-      chosen_weight *= 1.0f - w;
-    }
-    u1 = min(u1, ONE_MINUS_EPSILON);
-    chosen_path = 2u * chosen_path + child;
-    node = scene_material(blend_child(node, child));
-  }
-  node.flags |= inherited;
-  BsdfSample s = bsdf_leaf_sample(node, uv, wi, u1, u2);
+  uint chosen_twosided = 0u;
+  uint chosen = blend_choose(m, uv, u1, chosen_weight, chosen_path, chosen_twosided);
+  for (uint depth = 1u; depth < BLEND_MAX_DEPTH && scene_material(chosen).type == BSDF_BLEND;
+       ++depth)
+    chosen =
+        blend_choose(scene_material(chosen), uv, u1, chosen_weight, chosen_path, chosen_twosided);
+  BsdfSample s = bsdf_leaf_sample(blend_leaf_material(chosen, chosen_twosided), uv, wi, u1, u2);
   if (!(s.pdf > 0.0f)) return bsdf_sample_failed();
 
   // A delta lobe is an atom of the mixture: the other leaves' densities do not mix into it.
@@ -138,9 +164,10 @@ INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, v
   uint path = 1u;
   do {
     float weight;
-    Material leaf = blend_leaf(m, uv, path, weight);
+    uint twosided;
+    uint leaf = blend_leaf(m, uv, path, weight, twosided);
     if (path != chosen_path && weight > 0.0f) {
-      BsdfEvalPdf v = bsdf_leaf_eval_pdf(leaf, uv, wi, s.wo);
+      BsdfEvalPdf v = bsdf_leaf_eval_pdf(blend_leaf_material(leaf, twosided), uv, wi, s.wo);
       value += weight * v.f;
       pdf += weight * v.pdf;
     }
