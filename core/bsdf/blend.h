@@ -65,16 +65,17 @@ INLINE uint blend_path_child(INOUT(uint) path, INOUT(int) level) {
   return 1u;
 }
 
-// The leaf at `path` below the blend `root` or, when that node is a blend, below it through
-// child 1 at each level (path is extended to the leaf's code): its material index, the product
-// of the weights met from the root, and the `twosided` of any blend above it.
-INLINE uint blend_leaf(IN(Material) root, TexCoord uv, INOUT(uint) path, OUT(float) weight,
-                       OUT(uint) twosided) {
+// The leaf at `path` below the blend `root` (of weight w_root, evaluated once per walk) or, when
+// that node is a blend, below it through child 1 at each level (path is extended to the leaf's
+// code): its material index, the product of the weights met from the root, and the `twosided`
+// of any blend above it. The weights of nested blends are evaluated again for each leaf below
+// them: the price of keeping no stack.
+INLINE uint blend_leaf(IN(Material) root, float w_root, TexCoord uv, INOUT(uint) path,
+                       OUT(float) weight, OUT(uint) twosided) {
   int level = findMSB(path);
   weight = 1.0f;
   twosided = 0u;
-  uint index =
-      blend_step(root, blend_weight(root, uv), blend_path_child(path, level), weight, twosided);
+  uint index = blend_step(root, w_root, blend_path_child(path, level), weight, twosided);
   for (uint depth = 1u; depth < BLEND_MAX_DEPTH && scene_material(index).type == BSDF_BLEND;
        ++depth) {
     REF(Material) node = scene_material(index);
@@ -101,11 +102,12 @@ INLINE uint blend_next(uint path) {
 // blendbsdf.cpp's eval_diffuse_reflectance: (1 - w) first + w second, recursively.
 INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
   vec3 value = vec3(0.0f);
+  float w_root = blend_weight(m, uv);
   uint path = 1u;
   do {
     float weight;
     uint twosided;
-    uint leaf = blend_leaf(m, uv, path, weight, twosided);
+    uint leaf = blend_leaf(m, w_root, uv, path, weight, twosided);
     if (weight > 0.0f)
       value += weight * bsdf_leaf_diffuse_reflectance(blend_leaf_material(leaf, twosided), uv, wi);
     path = blend_next(path);
@@ -115,11 +117,12 @@ INLINE vec3 blend_diffuse_reflectance(IN(Material) m, TexCoord uv, vec3 wi) {
 
 INLINE BsdfEvalPdf blend_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo) {
   BsdfEvalPdf sum = bsdf_eval_pdf_zero();
+  float w_root = blend_weight(m, uv);
   uint path = 1u;
   do {
     float weight;
     uint twosided;
-    uint leaf = blend_leaf(m, uv, path, weight, twosided);
+    uint leaf = blend_leaf(m, w_root, uv, path, weight, twosided);
     if (weight > 0.0f) {
       BsdfEvalPdf v = bsdf_leaf_eval_pdf(blend_leaf_material(leaf, twosided), uv, wi, wo);
       sum.f += weight * v.f;
@@ -132,9 +135,8 @@ INLINE BsdfEvalPdf blend_eval_pdf(IN(Material) m, TexCoord uv, vec3 wi, vec3 wo)
 
 // One level of blend_sample's descent: child 1 when u1 <= w (as Mitsuba), u1 rescaled to the
 // chosen child's share and kept below 1 so that leaves see a sample in [0, 1).
-INLINE uint blend_choose(IN(Material) node, TexCoord uv, INOUT(float) u1, INOUT(float) weight,
+INLINE uint blend_choose(IN(Material) node, float w, INOUT(float) u1, INOUT(float) weight,
                          INOUT(uint) path, INOUT(uint) twosided) {
-  float w = blend_weight(node, uv);
   uint child = (u1 <= w && w > 0.0f) ? 1u : 0u;
   u1 = min(child == 1u ? u1 / w : (u1 - w) / (1.0f - w), ONE_MINUS_EPSILON);
   path = 2u * path + child;
@@ -146,11 +148,14 @@ INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, v
   float chosen_weight = 1.0f;
   uint chosen_path = 1u;
   uint chosen_twosided = 0u;
-  uint chosen = blend_choose(m, uv, u1, chosen_weight, chosen_path, chosen_twosided);
+  float w_root = blend_weight(m, uv);
+  uint chosen = blend_choose(m, w_root, u1, chosen_weight, chosen_path, chosen_twosided);
   for (uint depth = 1u; depth < BLEND_MAX_DEPTH && scene_material(chosen).type == BSDF_BLEND;
-       ++depth)
+       ++depth) {
+    REF(Material) node = scene_material(chosen);
     chosen =
-        blend_choose(scene_material(chosen), uv, u1, chosen_weight, chosen_path, chosen_twosided);
+        blend_choose(node, blend_weight(node, uv), u1, chosen_weight, chosen_path, chosen_twosided);
+  }
   BsdfSample s = bsdf_leaf_sample(blend_leaf_material(chosen, chosen_twosided), uv, wi, u1, u2);
   if (!(s.pdf > 0.0f)) return bsdf_sample_failed();
 
@@ -165,7 +170,7 @@ INLINE BsdfSample blend_sample(IN(Material) m, TexCoord uv, vec3 wi, float u1, v
   do {
     float weight;
     uint twosided;
-    uint leaf = blend_leaf(m, uv, path, weight, twosided);
+    uint leaf = blend_leaf(m, w_root, uv, path, weight, twosided);
     if (path != chosen_path && weight > 0.0f) {
       BsdfEvalPdf v = bsdf_leaf_eval_pdf(blend_leaf_material(leaf, twosided), uv, wi, s.wo);
       value += weight * v.f;
