@@ -128,7 +128,13 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   float frac_bsdf = n_bsdf / (n_bsdf + n_emitter);
   float frac_emitter = n_emitter / (n_bsdf + n_emitter);
 
-  // ---- What the ray found: emission, weighted against emitter sampling from prev_p.
+  // ---- What the ray found: emission, weighted against emitter sampling from prev_p. The
+  // path so far has s.depth scattering events, so s.depth + 1 segments (path; direct keeps
+  // min_depth 1 and depth 0). The emitter-sampling density is needed only for the MIS weight of
+  // emission that counts (a tree walk under the light BVH): not for the camera ray's, nor after
+  // a delta lobe.
+  bool counts = int(s.depth) + 1 >= it.min_depth && any(notEqual(s.throughput, vec3(0.0f)));
+  bool weighted = counts && !first && s.prev_bsdf_delta == 0u;
   bool found_surface = hit.shape != NO_INDEX;
   vec3 le = vec3(0.0f);
   float em_pdf = 0.0f;
@@ -140,20 +146,16 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
         return no_shadow_ray();
       }
       le = eval_emitter_surface(si);
-      em_pdf = pdf_emitter_surface(s.prev_p, si);
+      if (weighted && any(notEqual(le, vec3(0.0f)))) em_pdf = pdf_emitter_surface(s.prev_p, si);
     }
     // Where the next samples start: the path's new vertex, or the direct integrator's first
     // hit, which its later rounds keep. (A path that ends below leaves it unread.)
     if (!direct || first) s.anchor = shading_point(si);
   } else if (!(first && it.hide_emitters != 0u)) {
     le = eval_environment(s.ray.d);
-    em_pdf = pdf_environment(s.ray.d);
+    if (weighted && any(notEqual(le, vec3(0.0f)))) em_pdf = pdf_environment(s.ray.d);
   }
-  // The path so far has s.depth scattering events, so s.depth + 1 segments (path; direct keeps
-  // min_depth 1 and depth 0).
-  bool long_enough = int(s.depth) + 1 >= it.min_depth;
-  if (long_enough && any(notEqual(le, vec3(0.0f))) && any(notEqual(s.throughput, vec3(0.0f)))) {
-    if (s.prev_bsdf_delta != 0u) em_pdf = 0.0f;
+  if (counts && any(notEqual(le, vec3(0.0f)))) {
     float weight =
         first ? 1.0f : power_heuristic(s.prev_bsdf_pdf * frac_bsdf, em_pdf * frac_emitter) / n_bsdf;
     s.radiance += s.throughput * le * weight;
