@@ -132,7 +132,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   // path so far has s.depth scattering events, so s.depth + 1 segments (path; direct keeps
   // min_depth 1 and depth 0). The emitter-sampling density is needed only for the MIS weight of
   // emission that counts (a tree walk under the light BVH): not for the camera ray's, nor after
-  // a delta lobe.
+  // a delta lobe, nor for zero emission (an emitter seen from behind).
   bool counts = int(s.depth) + 1 >= it.min_depth && any(notEqual(s.throughput, vec3(0.0f)));
   bool weighted = counts && !first && s.prev_bsdf_delta == 0u;
   bool found_surface = hit.shape != NO_INDEX;
