@@ -9,14 +9,13 @@
 #include "spirv/alpha.h"
 #include "spirv/hit.h"
 #include "spirv/miss.h"
-#include "spirv/shadow.h"
 #include "spirv/shape.h"
 
 namespace tr {
 
 namespace {
 
-const uint32_t kMissCount = 2;
+const uint32_t kMissCount = 1;
 const uint32_t kHitGroupCount = 2;
 
 VkDeviceSize align_up(VkDeviceSize x, VkDeviceSize a) { return (x + a - 1) / a * a; }
@@ -89,7 +88,6 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const std::vector<S
     for (const Spirv& raygen : raygens) stages.push_back({VK_SHADER_STAGE_RAYGEN_BIT_KHR, raygen});
     const uint32_t R = static_cast<uint32_t>(raygens.size());
     stages.push_back({VK_SHADER_STAGE_MISS_BIT_KHR, {spirv_miss, sizeof(spirv_miss)}});
-    stages.push_back({VK_SHADER_STAGE_MISS_BIT_KHR, {spirv_shadow, sizeof(spirv_shadow)}});
     stages.push_back({VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, {spirv_hit, sizeof(spirv_hit)}});
     stages.push_back({VK_SHADER_STAGE_INTERSECTION_BIT_KHR, {spirv_shape, sizeof(spirv_shape)}});
     // The any-hit stage only where the scene alpha-tests (lavapipe compiles a slower
@@ -119,12 +117,11 @@ RayTracingPipeline::RayTracingPipeline(VulkanDevice& device, const std::vector<S
     for (uint32_t i = 0; i < R; ++i)
       groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, i, U, U, U));
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, R, U, U, U));
-    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, R + 1, U, U, U));
     // Any-hit runs only on non-opaque (alpha-tested) triangle geometries.
-    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, R + 2,
-                           alpha_tested ? R + 4 : U, U));
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, U, R + 1,
+                           alpha_tested ? R + 3 : U, U));
     groups.push_back(
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, R + 2, U, R + 3));
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, U, R + 1, U, R + 2));
     VkRayTracingPipelineCreateInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;
     info.stageCount = static_cast<uint32_t>(stage_infos.size());
