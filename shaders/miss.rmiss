@@ -1,4 +1,5 @@
-// Closest-hit query that hit nothing.
+// A query that hit nothing (shaders/trace.glsl): for an occlusion query, its answer that
+// nothing blocks the ray.
 #version 460
 #extension GL_EXT_ray_tracing : require
 #extension GL_GOOGLE_include_directive : require
