@@ -292,51 +292,79 @@ INLINE uint bsdf_flags(Material m, TexCoord uv) {
   return bsdf_tree_flags(m, uv);
 }
 
-// The shadow terminator scales the value, not the density.
-INLINE BsdfEvalPdf bsdf_surface_eval_pdf(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi,
-                                         vec3 wo) {
+// A root `normalmap` or `bumpmap` resolved at a shading point for incident direction wi: its
+// perturbed frame (relative to the shading frame) and options, which a vertex's two BSDF calls
+// (the light sample's evaluation, the BSDF sample) share, so its texture lookup and frame are
+// computed once. perturbed 0: no such wrapper, the frame is unread.
+struct BsdfRoot {
+  Frame frame;
+  uint perturbed;
+  uint twosided;   // the wrapper's own `twosided`
+  uint shadowing;  // use_shadowing_function
+};
+
+INLINE BsdfRoot bsdf_root(IN(BsdfSurface) g, IN(Material) m, TexCoord uv, vec3 wi) {
+  BsdfRoot r;
+  r.frame = frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
+  r.perturbed = bsdf_is_perturbed(m) ? 1u : 0u;
+  r.twosided = r.perturbed != 0u && (m.flags & MATERIAL_TWOSIDED) != 0u ? 1u : 0u;
+  r.shadowing = r.perturbed != 0u && normalmap_shadowing(m) ? 1u : 0u;
+  if (r.perturbed != 0u) {
+    if (r.twosided != 0u) wi.z = abs(wi.z);
+    r.frame = bsdf_perturbed_frame(m, g, uv, wi);
+  }
+  return r;
+}
+
+// eval and pdf of the material `tree` below root r (the wrapper's child, or the material itself
+// when r is not perturbed). The shadow terminator scales the value, not the density.
+INLINE BsdfEvalPdf bsdf_root_eval_pdf(IN(BsdfRoot) r, IN(Material) tree, TexCoord uv, vec3 wi,
+                                      vec3 wo) {
   float scale = 1.0f;
-  if (bsdf_is_perturbed(m)) {
-    if ((m.flags & MATERIAL_TWOSIDED) != 0u) {
+  if (r.perturbed != 0u) {
+    if (r.twosided != 0u) {
       wo.z = mulsign(wo.z, wi.z);
       wi.z = abs(wi.z);
     }
-    Frame f = bsdf_perturbed_frame(m, g, uv, wi);
-    vec3 wo_perturbed = frame_to_local(f, wo);
+    vec3 wo_perturbed = frame_to_local(r.frame, wo);
     if (!(wo.z * wo_perturbed.z > 0.0f)) return bsdf_eval_pdf_zero();
-    if (normalmap_shadowing(m)) scale = normalmap_shadow_terminator(f.n, wo);
-    wi = frame_to_local(f, wi);
+    if (r.shadowing != 0u) scale = normalmap_shadow_terminator(r.frame.n, wo);
+    wi = frame_to_local(r.frame, wi);
     wo = wo_perturbed;
-    m = scene_material(normalmap_child(m));
   }
-  BsdfEvalPdf v = bsdf_tree_eval_pdf(m, uv, wi, wo);
+  BsdfEvalPdf v = bsdf_tree_eval_pdf(tree, uv, wi, wo);
   v.f *= scale;
   return v;
 }
 
-INLINE BsdfSample bsdf_surface_sample(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, float u1,
-                                      vec2 u2) {
-  bool perturbed = bsdf_is_perturbed(m);
+INLINE BsdfSample bsdf_root_sample(IN(BsdfRoot) r, IN(Material) tree, TexCoord uv, vec3 wi,
+                                   float u1, vec2 u2) {
   float wi_z = wi.z;
-  bool twosided = perturbed && (m.flags & MATERIAL_TWOSIDED) != 0u;
-  if (twosided) wi.z = abs(wi.z);
-  Frame f = frame_from_normal(vec3(0.0f, 0.0f, 1.0f));
-  bool shadowing = false;
-  if (perturbed) {
-    f = bsdf_perturbed_frame(m, g, uv, wi);
-    shadowing = normalmap_shadowing(m);
-    wi = frame_to_local(f, wi);
-    m = scene_material(normalmap_child(m));
-  }
-  BsdfSample s = bsdf_tree_sample(m, uv, wi, u1, u2);
-  if (perturbed) {
-    vec3 wo = frame_to_world(f, s.wo);
+  if (r.twosided != 0u) wi.z = abs(wi.z);
+  if (r.perturbed != 0u) wi = frame_to_local(r.frame, wi);
+  BsdfSample s = bsdf_tree_sample(tree, uv, wi, u1, u2);
+  if (r.perturbed != 0u) {
+    vec3 wo = frame_to_world(r.frame, s.wo);
     if (!(s.wo.z * wo.z > 0.0f) || all(equal(s.weight, vec3(0.0f)))) return bsdf_sample_failed();
-    if (shadowing) s.weight *= normalmap_shadow_terminator(f.n, wo);
+    if (r.shadowing != 0u) s.weight *= normalmap_shadow_terminator(r.frame.n, wo);
     s.wo = wo;
-    if (twosided) s.wo.z = mulsign(s.wo.z, wi_z);
+    if (r.twosided != 0u) s.wo.z = mulsign(s.wo.z, wi_z);
   }
   return s;
+}
+
+INLINE BsdfEvalPdf bsdf_surface_eval_pdf(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi,
+                                         vec3 wo) {
+  BsdfRoot r = bsdf_root(g, m, uv, wi);
+  if (r.perturbed != 0u) m = scene_material(normalmap_child(m));
+  return bsdf_root_eval_pdf(r, m, uv, wi, wo);
+}
+
+INLINE BsdfSample bsdf_surface_sample(IN(BsdfSurface) g, Material m, TexCoord uv, vec3 wi, float u1,
+                                      vec2 u2) {
+  BsdfRoot r = bsdf_root(g, m, uv, wi);
+  if (r.perturbed != 0u) m = scene_material(normalmap_child(m));
+  return bsdf_root_sample(r, m, uv, wi, u1, u2);
 }
 
 // Mitsuba's eval_diffuse_reflectance through the wrappers: normalmap.cpp and bumpmap.cpp return

@@ -182,7 +182,8 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   }
   REF(ShadingPoint) sp = s.anchor;
   REF(Material) m = scene_material(sp.material);
-  BsdfSurface surface = bsdf_surface(sp, m);
+  BsdfRoot root = bsdf_root(bsdf_surface(sp, m), m, sp.tex, sp.wi);
+  REF(Material) tree = scene_material(root.perturbed != 0u ? normalmap_child(m) : sp.material);
   vec3 base = direct ? vec3(1.0f) : s.throughput;
 
   // ---- Emitter sampling.
@@ -193,7 +194,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);
-      BsdfEvalPdf bsdf = bsdf_surface_eval_pdf(surface, m, sp.tex, sp.wi, wo);
+      BsdfEvalPdf bsdf = bsdf_root_eval_pdf(root, tree, sp.tex, sp.wi, wo);
       float mis =
           es.delta != 0u ? 1.0f : power_heuristic(es.pdf * frac_emitter, bsdf.pdf * frac_bsdf);
       sr.contribution = base * bsdf.f * es.weight * (mis / n_emitter);
@@ -210,7 +211,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   s.prev_p = sp.p;
   if (round < uint(n_bsdf)) {
     float u1 = rng_next_1d(s.rng);
-    BsdfSample bs = bsdf_surface_sample(surface, m, sp.tex, sp.wi, u1, rng_next_2d(s.rng));
+    BsdfSample bs = bsdf_root_sample(root, tree, sp.tex, sp.wi, u1, rng_next_2d(s.rng));
     s.ray = spawn_ray(sp.p, sp.ng, frame_to_world(sp.frame, bs.wo));
     s.throughput = base * bs.weight;
     s.eta *= bs.eta;
