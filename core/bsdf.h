@@ -19,6 +19,8 @@
 //   bsdf_pdf(m, uv, wi, wo)     solid-angle density of bsdf_sample returning wo (smooth lobes)
 //   bsdf_surface_eval_pdf(g, m, uv, wi, wo)   both at once (Mitsuba's eval_pdf), at a surface
 //   bsdf_sample(m, uv, wi, u1, u2)
+//   bsdf_root(g, m, uv, wi), then bsdf_root_eval_pdf / bsdf_root_sample: the same calls at one
+//     shading point, a root `normalmap`/`bumpmap` resolved once for all of them
 #ifndef TWINRAY_CORE_BSDF_H
 #define TWINRAY_CORE_BSDF_H
 
