@@ -190,7 +190,7 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   ShadowRay sr = no_shadow_ray();
   // The emitter sample adds one scattering event here: s.depth + 2 segments.
   if (round < uint(n_emitter) && int(s.depth) + 2 >= it.min_depth &&
-      (bsdf_flags(m, sp.tex) & BSDF_SMOOTH) != 0u) {
+      (bsdf_tree_flags(tree, sp.tex) & BSDF_SMOOTH) != 0u) {
     EmitterSample es = sample_emitter(sp.p, s.rng);
     if (es.pdf > 0.0f) {
       vec3 wo = frame_to_local(sp.frame, es.d);
