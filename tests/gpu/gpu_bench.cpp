@@ -1,11 +1,13 @@
 // Measurement tool (not a test): renders a scene on the GPU backend and prints the time of
 // each phase and the throughput, for the specialized and the all-features pipeline.
 //   gpu_bench SCENE.xml|SCENE.bin [--spp N] [--all-features | --all-features-but GROUPS]
-//             [--without-bsdfs TYPES] [--keep-loops] [--device D] [-D name=value]...
+//             [--without-bsdfs TYPES] [--without-samplers TYPES] [--keep-loops] [--device D]
+//             [-D name=value]...
 //             [--emitter-selection uniform|power|bvh] [--save DUMP.bin]
 // --all-features-but bsdf,aov (say): every feature, but the scene's own BSDF types and AOVs —
 // what one group of features costs the all-features pipeline. --without-bsdfs 10,11 (say) then
-// drops BSDF types (core/scene_types.h's BSDF_* numbers) from the pipeline's. --keep-loops takes
+// drops BSDF types (core/scene_types.h's BSDF_* numbers) from the pipeline's, --without-samplers
+// 5,6 sampler types (SAMPLER_* numbers). --keep-loops takes
 // the shader's build for CPU devices (loops not unrolled) on a GPU too.
 // Built without the loader (TWINRAY_BENCH_NO_LOADER), it reads only scene dumps
 // (scene_dump.h), for machines that lack the loader's libraries; a dump keeps the emitter
@@ -57,10 +59,24 @@ std::vector<std::string> split(const std::string& list) {
   return items;
 }
 
+// The type numbers of `list` (comma-separated, 0 to 31) as a mask; `option` names them in errors.
+uint32_t type_mask(const std::string& list, const char* option) {
+  uint32_t mask = 0;
+  for (const std::string& t : split(list)) {
+    if (t.empty() || t.size() > 2 || t.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoul(t) >= 32)
+      throw std::runtime_error(std::string(option) + ": '" + t + "' is no type number (0 to 31)");
+    mask |= 1u << std::stoul(t);
+  }
+  return mask;
+}
+
 // Every feature but the groups named in `groups`, which keep the scene's own, and without the
-// BSDF types numbered in `without_bsdfs` (core/scene_types.h's BSDF_*).
+// BSDF and sampler types numbered in `without_bsdfs` and `without_samplers`
+// (core/scene_types.h's BSDF_* and SAMPLER_*).
 tr::SceneFeatures pipeline_features(const tr::SceneFeatures& own, const std::string& groups,
-                                    const std::string& without_bsdfs) {
+                                    const std::string& without_bsdfs,
+                                    const std::string& without_samplers) {
   tr::SceneFeatures f = tr::all_features();
   for (const std::string& g : split(groups)) {
     const FeatureGroup* group = std::find_if(std::begin(kGroups), std::end(kGroups),
@@ -68,12 +84,8 @@ tr::SceneFeatures pipeline_features(const tr::SceneFeatures& own, const std::str
     if (group == std::end(kGroups)) throw std::runtime_error("unknown feature group '" + g + "'");
     f.*group->mask = own.*group->mask;
   }
-  for (const std::string& t : split(without_bsdfs)) {
-    if (t.empty() || t.size() > 2 || t.find_first_not_of("0123456789") != std::string::npos ||
-        std::stoul(t) >= 32)
-      throw std::runtime_error("--without-bsdfs: '" + t + "' is no BSDF type number (0 to 31)");
-    f.bsdf_types &= ~(1u << std::stoul(t));
-  }
+  f.bsdf_types &= ~type_mask(without_bsdfs, "--without-bsdfs");
+  f.sampler_types &= ~type_mask(without_samplers, "--without-samplers");
   return f;
 }
 
@@ -95,6 +107,7 @@ int main(int argc, char** argv) {
   bool all = false;
   std::string but;
   std::string without_bsdfs;
+  std::string without_samplers;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--spp" && i + 1 < argc) {
@@ -110,6 +123,8 @@ int main(int argc, char** argv) {
       tuning.keep_loops = true;
     } else if (a == "--without-bsdfs" && i + 1 < argc) {
       without_bsdfs = argv[++i];
+    } else if (a == "--without-samplers" && i + 1 < argc) {
+      without_samplers = argv[++i];
     } else if (a == "--device" && i + 1 < argc) {
       options.device = argv[++i];
 #ifndef TWINRAY_BENCH_NO_LOADER
@@ -132,8 +147,10 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (!without_bsdfs.empty() && !all) {
-    std::fprintf(stderr, "gpu_bench: --without-bsdfs needs --all-features or --all-features-but\n");
+  if ((!without_bsdfs.empty() || !without_samplers.empty()) && !all) {
+    std::fprintf(stderr,
+                 "gpu_bench: --without-bsdfs and --without-samplers need --all-features or "
+                 "--all-features-but\n");
     return 2;
   }
   try {
@@ -150,10 +167,12 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (all)
-      tuning.features = pipeline_features(tr::scene_features(scene.buffers), but, without_bsdfs);
+      tuning.features = pipeline_features(tr::scene_features(scene.buffers), but, without_bsdfs,
+                                          without_samplers);
     std::string pipeline = all ? "all-features" : "specialized";
     if (!but.empty()) pipeline += " but " + but;
     if (!without_bsdfs.empty()) pipeline += " without BSDFs " + without_bsdfs;
+    if (!without_samplers.empty()) pipeline += " without samplers " + without_samplers;
     if (tuning.keep_loops) pipeline += ", loops kept";
     tr::GpuTimings t;
     tr::RenderResult r = tr::render_with_raygen(scene, options, tr::renderer_raygen(), tuning, &t);
