@@ -7,8 +7,8 @@
 // --all-features-but bsdf,aov (say): every feature, but the scene's own BSDF types and AOVs —
 // what one group of features costs the all-features pipeline. --without-bsdfs 10,11 (say) then
 // drops BSDF types (core/scene_types.h's BSDF_* numbers) from the pipeline's, --without-samplers
-// 5,6 sampler types (SAMPLER_* numbers). --keep-loops takes
-// the shader's build for CPU devices (loops not unrolled) on a GPU too.
+// 5,6 sampler types (SAMPLER_* numbers). --keep-loops takes the shader's build for CPU devices
+// (loops not unrolled) on a GPU too.
 // Built without the loader (TWINRAY_BENCH_NO_LOADER), it reads only scene dumps
 // (scene_dump.h), for machines that lack the loader's libraries; a dump keeps the emitter
 // selection it was saved with.
