@@ -12,6 +12,7 @@
 
 #include "scenes/spectrum.h"
 #include "scenes/values.h"
+#include "scenes/xml_upgrade.h"
 
 namespace tr {
 
@@ -65,6 +66,7 @@ bool unbounded_parameter(const std::string& name) {
 struct Source {
   std::string display;  // file name used in messages
   fs::path dir;
+  bool below_2_0 = false;  // version below 2.0.0: its objects are upgraded (xml_upgrade.h)
   std::vector<size_t> line_starts;
 
   int line_of(ptrdiff_t offset) const {
@@ -109,12 +111,13 @@ class Parser {
     root->tag = "scene";
     parse_file(path, path, *root, 0, true);
     resolve_references();
+    for (Node* node : upgraded_) upgrade_from_v1(*node);
     check_cycles(*root);
     // As Mitsuba: a -D value that no $name uses is an error (probably a typo).
     for (const auto& [name, value] : defines_)
       if (!used_.count(name) && !unused_defines_allowed_)
         fail(root->loc, "-D ", name, "=", value, " is not used: the scene has no $", name);
-    return {root, resolver_};
+    return {root, resolver_, warnings_};
   }
 
  private:
@@ -136,6 +139,10 @@ class Parser {
     std::string id;
   };
   std::vector<PendingReference> references_;
+  // The objects of files below version 2.0.0, upgraded once every file is read, as Mitsuba's
+  // transform_upgrade does.
+  std::vector<Node*> upgraded_;
+  std::vector<std::string> warnings_;
 
   void resolve_references() {
     for (const PendingReference& r : references_) {
@@ -193,7 +200,17 @@ class Parser {
     check_attributes(root, src, {"version"});
     if (root.attribute("version").empty())
       fail(src.at(root), "<scene> is missing its 'version' attribute");
-    check_version(root.attribute("version").value(), src.at(root));
+    std::string version = root.attribute("version").value();
+    src.below_2_0 = check_version(version, src.at(root));
+    if (src.below_2_0) {
+      std::string warning = to_string(src.at(root)) + ": scene version " + version +
+                            " upgraded on load as Mitsuba 3 upgrades Mitsuba 0.x scenes "
+                            "(camelCase parameter names to snake_case, diffuse_reflectance to "
+                            "reflectance, uoffset/voffset/uscale/vscale to to_uv)";
+      if (std::find(warnings_.begin(), warnings_.end(), warning) == warnings_.end())
+        warnings_.push_back(warning);
+      if (is_main) upgraded_.push_back(&parent);
+    }
     if (is_main) parent.loc = src.at(root);
     for (pugi::xml_node child : root.children()) parse_element(child, parent, src, depth, false, 1);
   }
@@ -230,15 +247,18 @@ class Parser {
     return attr(x, name, src);
   }
 
-  // Mitsuba's util::Version: three period-separated numbers. Scenes before 2.0.0 are Mitsuba
-  // 0.x files, which Mitsuba 3 rewrites on load (renamed plugins and parameters); twinray
-  // reads the 2.0 format only and says so rather than misread them.
-  void check_version(const std::string& v, const Location& loc) {
+  // Mitsuba's util::Version: three period-separated numbers (digits only, stricter than its
+  // tokenizer). True below 2.0.0: a Mitsuba 0.x file, upgraded as Mitsuba 3 upgrades it
+  // (xml_upgrade.h). From 4.0.0 on, a format after Mitsuba 3's that twinray cannot know: refused,
+  // where Mitsuba 3.8 reads any version from 2.0.0 on as its own.
+  bool check_version(const std::string& v, const Location& loc) {
     int parts = 0;
     bool digits = false, ok = true;
+    unsigned long major = 0;
     for (char c : v) {
       if (std::isdigit(static_cast<unsigned char>(c))) {
         digits = true;
+        if (parts == 0) major = std::min(major * 10 + unsigned(c - '0'), 10ul);
       } else if (c == '.' && digits) {
         ++parts;
         digits = false;
@@ -248,10 +268,16 @@ class Parser {
     }
     if (!ok || !digits || parts != 2)
       fail(loc, "<scene version=\"", v, "\">: a version is three period-separated numbers");
-    if (std::stoul(v.substr(0, v.find('.'))) < 2)
+    if (major > 3)
       fail(loc, "<scene version=\"", v,
-           "\">: a Mitsuba 0.x scene, which twinray does not read (Mitsuba 3 upgrades it on load; "
-           "save the upgraded scene with version 2.0.0 or later)");
+           "\">: a version after Mitsuba 3's (3.x.x), whose scene format twinray does not know");
+    return major < 2;
+  }
+
+  // The name the plugin reads the parameter under, where the upgrade's renaming of camelCase
+  // names decides which colors may leave [0, 1].
+  static std::string read_name(const std::string& name, const Source& src) {
+    return src.below_2_0 ? camel_to_underscore_case(name) : name;
   }
 
   void check_attributes(const pugi::xml_node& x, const Source& src,
@@ -306,6 +332,7 @@ class Parser {
       for (pugi::xml_node c : x.children())
         parse_element(c, *node, src, depth, in_emitter, level + 1);
       if (!node->id.empty()) ids_[node->id] = node;
+      if (src.below_2_0) upgraded_.push_back(node.get());
       Property p;
       p.name = has_attr(x, "name") ? attr(x, "name", src) : "_arg_" + std::to_string(unnamed_++);
       p.kind = PropertyKind::Object;
@@ -414,7 +441,7 @@ class Parser {
       p.kind = PropertyKind::Color;
       p.vec = glm::dvec3(v[0], v[1], v[2]);
       // Mitsuba's srgb texture rejects reflectance-like colors outside [0, 1].
-      if (!within_emitter && !unbounded_parameter(p.name) &&
+      if (!within_emitter && !unbounded_parameter(read_name(p.name, src)) &&
           (glm::any(glm::lessThan(p.vec, glm::dvec3(0.0))) ||
            glm::any(glm::greaterThan(p.vec, glm::dvec3(1.0)))))
         fail(loc, "rgb '", p.name, "' = (", v[0], ", ", v[1], ", ", v[2],
@@ -530,9 +557,9 @@ class Parser {
   glm::dvec3 parse_spectrum(const pugi::xml_node& x, const Source& src, const std::string& name,
                             bool within_emitter) {
     Location loc = src.at(x);
-    SpectrumUse use = unbounded_parameter(name) ? SpectrumUse::Unbounded
-                      : within_emitter          ? SpectrumUse::Emission
-                                                : SpectrumUse::Reflectance;
+    SpectrumUse use = unbounded_parameter(read_name(name, src)) ? SpectrumUse::Unbounded
+                      : within_emitter                          ? SpectrumUse::Emission
+                                                                : SpectrumUse::Reflectance;
     bool has_value = has_attr(x, "value"), has_file = has_attr(x, "filename");
     if (has_value == has_file)
       fail(loc, "<spectrum> requires exactly one of 'value' and 'filename'");

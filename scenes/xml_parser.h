@@ -1,6 +1,6 @@
 // Mitsuba 3 XML -> Node tree: <default>, $name substitution, <include>, <path>, <ref>/id,
-// typed properties (spectra converted to RGB, transforms composed), with every error reported
-// as "file:line: ...".
+// typed properties (spectra converted to RGB, transforms composed), files below version 2.0.0
+// upgraded as by Mitsuba 3 (xml_upgrade.h), with every error reported as "file:line: ...".
 #pragma once
 
 #include <filesystem>
@@ -23,6 +23,9 @@ struct FileResolver {
 struct ParsedScene {
   NodePtr root;  // tag "scene"
   FileResolver resolver;
+  // "file:line: what" lines for the user: one per file below version 2.0.0, upgraded as
+  // Mitsuba 3 upgrades it (xml_upgrade.h).
+  std::vector<std::string> warnings;
 };
 
 // Mitsuba Transform4f::look_at, as <lookat>; fails at `loc` when origin = target or up is

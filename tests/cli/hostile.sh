@@ -49,8 +49,12 @@ lit unknown_ref '<shape type="sphere"><ref id="nothing"/></shape>'
 lit duplicate_id '<bsdf type="diffuse" id="a"/><bsdf type="diffuse" id="a"/><shape type="sphere"><ref id="a"/></shape>'
 lit bad_version '<shape type="sphere"/>'
 sed -i 's/version="3.0.0"/version="banana"/' "$d/bad_version.xml"
-lit old_version '<shape type="sphere"/>'
+lit old_version '<shape type="sphere"/><integrator type="path"><integer name="maxDepth" value="3"/></integrator>'
 sed -i 's/version="3.0.0"/version="0.6.0"/' "$d/old_version.xml"
+for v in 0.6 0.6.0.0 99999999999999999999.0.0 4.0.0; do
+  lit "version_$v" '<shape type="sphere"/>'
+  sed -i "s/version=\"3.0.0\"/version=\"$v\"/" "$d/version_$v.xml"
+done
 lit missing_obj "$(mesh obj missing.obj)"
 : >"$d/empty.obj"
 lit empty_obj "$(mesh obj empty.obj)"
@@ -172,7 +176,11 @@ check include_cycle 3 'cycle_.\.xml:[0-9]+: .*(cycle|recurs|itself)' -- $(r incl
 check unknown_ref 3 'unknown_ref\.xml:[0-9]+: .*nothing' -- $(r unknown_ref)
 check duplicate_id 3 'duplicate_id\.xml:[0-9]+: .*"?a"?' -- $(r duplicate_id)
 check bad_version 3 'bad_version\.xml:[0-9]+: .*version' -- $(r bad_version)
-check mitsuba_0_scene 3 'old_version\.xml:[0-9]+: .*0\.x' -- $(r old_version)
+check mitsuba_0_scene_upgraded 0 'twinray: 8x8' -- $(r old_version)
+check two_part_version 3 'version_0\.6\.xml:[0-9]+: .*three period-separated numbers' -- $(r version_0.6)
+check four_part_version 3 'version_0\.6\.0\.0\.xml:[0-9]+: .*three period-separated numbers' -- $(r version_0.6.0.0)
+check huge_version 3 'version_9+\.0\.0\.xml:[0-9]+: .*after Mitsuba 3' -- $(r version_99999999999999999999.0.0)
+check future_version 3 'version_4\.0\.0\.xml:[0-9]+: .*after Mitsuba 3' -- $(r version_4.0.0)
 check missing_obj 3 'missing_obj\.xml:[0-9]+: .*missing\.obj' -- $(r missing_obj)
 check empty_obj 3 'empty_obj\.xml:[0-9]+: .*empty\.obj' -- $(r empty_obj)
 check garbage_obj 3 'garbage_obj\.xml:[0-9]+: .*garbage\.obj' -- $(r garbage_obj)
