@@ -25,7 +25,9 @@
 #include "render/error_estimate.h"
 #include "render/film_error.h"
 #include "render/write_result.h"
+#include "scenes/added_environment.h"
 #include "scenes/emitter_selection.h"
+#include "scenes/gltf/gltf_import.h"
 #include "scenes/guide_aovs.h"
 #include "scenes/load_scene.h"
 #include "scenes/sampler.h"
@@ -38,6 +40,7 @@ const char* kUsage =
     "usage: twinray render SCENE [-o OUT.exr] [-D NAME=VALUE]... [-a PATH]... [--spp N]\n"
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
     "                      [--randomizations K] [--aov LIST] [--emitter-selection S]\n"
+    "                      [--envmap FILE [--envmap-scale S] | --constant RGB] [--camera C]\n"
     "  Renders a Mitsuba 3 XML, .scn or glTF 2.0 (.gltf/.glb) scene (-D width, height, spp,\n"
     "  max_depth; scenes/README.md). Writes OUT.exr (mean radiance, RGB in the film's\n"
     "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
@@ -63,6 +66,13 @@ const char* kUsage =
     "                  sampling_weight) or bvh (a light BVH by power, distance and\n"
     "                  orientation from the shading point; scenes/emitter_selection.h). All\n"
     "                  unbiased; they change the noise, hence the variance output\n"
+    "  --envmap FILE   light the scene with Mitsuba's envmap emitter of this image (EXR, HDR,\n"
+    "                  ...; +y up), scaled by --envmap-scale S (default 1)\n"
+    "  --constant RGB  light it with Mitsuba's constant emitter of radiance V or R,G,B\n"
+    "                  (either refused when the scene has a constant or envmap emitter)\n"
+    "  --camera C      glTF only: N renders through the file's cameras[N]; auto frames the\n"
+    "                  scene's bounds (yfov 45 degrees, looking down -z; the default when no\n"
+    "                  node has a camera)\n"
     "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
@@ -100,8 +110,23 @@ double positive_number(const std::string& option, const std::string& value) {
   return v;
 }
 
+bool is_camera_choice(const std::string& c) {
+  return c == "auto" ||
+         (!c.empty() && c.size() < 10 && c.find_first_not_of("0123456789") == std::string::npos);
+}
+
+void check_environment(const AddedEnvironment& e, bool scale_given) {
+  if (!e.envmap.empty() && e.constant)
+    throw UsageError("--envmap and --constant together: Mitsuba holds one environment a scene");
+  if (scale_given && e.envmap.empty()) throw UsageError("--envmap-scale needs --envmap");
+  std::error_code ec;
+  if (!e.envmap.empty() && !std::filesystem::is_regular_file(e.envmap, ec))
+    throw UsageError("--envmap: '" + e.envmap + "' is not a file");
+}
+
 RenderArgs parse(int argc, char** argv) {
   RenderArgs a;
+  bool envmap_scale = false;
   Arguments args(argc, argv);
   while (args.more()) {
     std::string arg = args.next();
@@ -140,6 +165,21 @@ RenderArgs parse(int argc, char** argv) {
       } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--emitter-selection: ") + e.what());
       }
+    } else if (arg == "--envmap") {
+      a.load.environment.envmap = args.value(arg);
+    } else if (arg == "--envmap-scale") {
+      a.load.environment.envmap_scale = positive_number(arg, args.value(arg));
+      envmap_scale = true;
+    } else if (arg == "--constant") {
+      try {
+        a.load.environment.constant = parse_radiance(args.value(arg));
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--constant: ") + e.what());
+      }
+    } else if (arg == "--camera") {
+      a.load.camera = args.value(arg);
+      if (!is_camera_choice(a.load.camera))
+        throw UsageError("--camera expects auto or a camera index, got '" + a.load.camera + "'");
     } else if (arg == "--aov") {
       a.aov_lists.push_back(args.value(arg));
     } else if (!arg.empty() && arg[0] == '-') {
@@ -151,6 +191,10 @@ RenderArgs parse(int argc, char** argv) {
     }
   }
   if (a.scene.empty()) throw UsageError("no scene file given");
+  check_environment(a.load.environment, envmap_scale);
+  if (!a.load.camera.empty() && !is_gltf(a.scene))
+    throw UsageError("--camera chooses among a glTF scene's cameras; '" + a.scene +
+                     "' is not a .gltf or .glb file");
   if (!a.aov_lists.empty()) {
     std::string joined;  // several --aov options add up
     for (const std::string& list : a.aov_lists) joined += (joined.empty() ? "" : ",") + list;

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "io/temp_file.h"
+#include "scenes/added_environment.h"
 #include "scenes/emitter_selection.h"
 #include "scenes/gltf/gltf_import.h"
 #include "scenes/plugins.h"
@@ -133,12 +134,18 @@ Scene SceneBuilder::build() {
 
 namespace {
 
+// What the command line adds to a parsed scene of any format.
+void adjust(Node& root, const LoadOptions& options) {
+  check_plugins(root);
+  if (!options.guide_aovs.empty()) wrap_in_guide_aovs(root, options.guide_aovs);
+  if (options.environment.any()) add_environment(root, options.environment);
+}
+
 Scene build_scene(const std::string& path, const LoadOptions& options) {
   if (is_scn(path)) {
     TemporaryDirectory meshes;
     ScnScene scn = import_scn(path, options, meshes.path(), "scn", false);
-    check_plugins(*scn.parsed.root);
-    if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*scn.parsed.root, options.guide_aovs);
+    adjust(*scn.parsed.root, options);
     Scene scene = SceneBuilder(std::move(scn.parsed), path).build();
     for (const std::string& w : scn.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return scene;
@@ -146,15 +153,13 @@ Scene build_scene(const std::string& path, const LoadOptions& options) {
   if (is_gltf(path)) {  // glTF 2.0 (scenes/gltf/)
     TemporaryDirectory work;
     GltfScene gltf = import_gltf(path, options, work.path());
-    check_plugins(*gltf.parsed.root);
-    if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*gltf.parsed.root, options.guide_aovs);
+    adjust(*gltf.parsed.root, options);
     Scene scene = SceneBuilder(std::move(gltf.parsed), path).build();
     for (const std::string& w : gltf.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return scene;
   }
   ParsedScene parsed = parse_scene_xml(path, options);
-  check_plugins(*parsed.root);
-  if (!options.guide_aovs.empty()) wrap_in_guide_aovs(*parsed.root, options.guide_aovs);
+  adjust(*parsed.root, options);
   SceneBuilder builder(std::move(parsed), path);
   return builder.build();
 }
@@ -163,6 +168,12 @@ Scene build_scene(const std::string& path, const LoadOptions& options) {
 
 Scene load_scene(const std::string& path, const LoadOptions& options) {
   Scene scene = build_scene(path, options);
+  if (scene.buffers.emitters.empty() &&
+      scene.buffers.globals.integrator.type != INTEGRATOR_AMBIENT_OCCLUSION)
+    std::fprintf(stderr,
+                 "warning: %s: the scene has no emitter, so its image is black (light it with "
+                 "--envmap FILE or --constant RGB, or add an emitter)\n",
+                 path.c_str());
   use_emitter_selection(scene.buffers, options.emitter_selection);
   return scene;
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/added_environment.h"
 #include "scenes/guide_aovs.h"
 #include "scenes/scene.h"
 
@@ -21,6 +22,11 @@ struct LoadOptions {
   std::vector<GuideAov> guide_aovs;
   // --emitter-selection: EMITTER_SELECTION_* (scenes/emitter_selection.h); Mitsuba's by default.
   uint emitter_selection = EMITTER_SELECTION_UNIFORM;
+  // --envmap / --constant: an environment added to the scene (scenes/added_environment.h).
+  AddedEnvironment environment;
+  // --camera, glTF scenes only: "" the file's first camera node (framing the scene when it has
+  // none), "auto" framing the scene's bounds, or N the file's cameras[N] (scenes/gltf/).
+  std::string camera;
 };
 
 // Parses and builds the scene: a Mitsuba 3 XML file or, by the extension, a `.scn` JSON scene

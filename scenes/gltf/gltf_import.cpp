@@ -13,9 +13,11 @@
 #include <sstream>
 #include <tuple>
 
-#include "scenes/assimp/assimp_loader.h"
 #include "scenes/assimp/imported_ply.h"
 #include "scenes/bitmap.h"
+#include "scenes/gltf/gltf_accessors.h"
+#include "scenes/gltf/gltf_buffers.h"
+#include "scenes/gltf/gltf_field_error.h"
 #include "scenes/json_node_builder.h"
 
 namespace tr {
@@ -29,11 +31,13 @@ const char* const kParameterNames[] = {"width", "height", "spp", "max_depth"};
 const long long kDefaultSpp = 64;
 const long long kDefaultHeight = 576;  // Mitsuba's hdrfilm default height
 const long long kDefaultWidth = 768;   // ... and width, when the camera gives no aspect ratio
+const double kAutoYfov = 45.0;         // degrees: --camera auto's vertical field of view
 
 // Extensions whose fields are read (the others are reported).
 const std::set<std::string> kSupportedExtensions = {
-    "KHR_lights_punctual", "KHR_materials_transmission", "KHR_materials_ior",
-    "KHR_materials_emissive_strength"};
+    "KHR_lights_punctual",   "KHR_materials_transmission",
+    "KHR_materials_ior",     "KHR_materials_emissive_strength",
+    "KHR_texture_transform", "KHR_mesh_quantization"};
 
 // glTF 2.0 spec, mesh.primitive.mode: the topology of a primitive.
 const int kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
@@ -55,22 +59,28 @@ class Importer : JsonNodeBuilder {
     std::string text = read_document();
     doc_ = parse_document(text);
     if (!doc_.is_object()) bad("", "expected a JSON object, not ", doc_.type_name());
-    check_asset();
-    read_parameters();
-    load_geometry();
-
     for (const std::string& p : options_.search_paths) out_.parsed.resolver.dirs.push_back(p);
     out_.parsed.resolver.dirs.push_back(dir_);
-    root_ = std::make_shared<Node>();
-    root_->tag = "scene";
-    root_->loc = at("");
-    out_.parsed.root = root_;
+    buffers_ = std::make_unique<GltfBuffers>(
+        doc_, [this](const std::string& name) { return out_.parsed.resolver.resolve(name, dir_); },
+        std::move(glb_bin_), have_glb_bin_);
+    accessors_ = std::make_unique<GltfAccessors>(doc_, *buffers_);
+    try {
+      check_asset();
+      read_parameters();
+      root_ = std::make_shared<Node>();
+      root_->tag = "scene";
+      root_->loc = at("");
+      out_.parsed.root = root_;
 
-    report_top_level();
-    read_lights();
-    walk_scene();
-    add_sensor();
-    add_integrator();
+      report_top_level();
+      read_lights();
+      walk_scene();
+      add_sensor();
+      add_integrator();
+    } catch (const GltfFieldError& e) {
+      bad(e.pointer, e.what());
+    }
     out_.warnings = std::move(warnings_);
     return std::move(out_);
   }
@@ -226,61 +236,53 @@ class Importer : JsonNodeBuilder {
       if (!used[i].is_string() || !kSupportedExtensions.count(used[i].get<std::string>()))
         warn("/extensionsUsed/" + std::to_string(i), "extension ", used[i].dump(),
              " not supported by twinray, its fields are ignored");
-    // Spec "Samplers": twinray's bitmaps filter bilinearly and wrap by repeating, the
-    // glTF defaults (linear filtering is the usual choice when undefined; wrap 10497 REPEAT).
+    // Spec "Samplers": wrapping and magnification map onto each bitmap (sampler()); twinray's
+    // bitmaps are not mipmapped.
     const json& samplers = list("samplers");
     for (size_t i = 0; i < samplers.size(); ++i) {
       std::string p = "/samplers/" + std::to_string(i);
-      const json& s = object(samplers[i], p);
-      known(s, p, {"magFilter", "minFilter", "wrapS", "wrapT"});
-      for (const char* key : {"wrapS", "wrapT"})
-        if (const json* w = member(s, key); w && !(w->is_number_integer() && *w == 10497))
-          warn(p + "/" + key, "ignored: twinray's textures wrap by repeating (10497)");
-      if (const json* f = member(s, "magFilter"); f && !(f->is_number_integer() && *f == 9729))
-        warn(p + "/magFilter", "ignored: twinray's textures filter bilinearly (9729 LINEAR)");
-      if (member(s, "minFilter"))
+      known(object(samplers[i], p), p, {"magFilter", "minFilter", "wrapS", "wrapT"});
+      if (member(samplers[i], "minFilter"))
         warn(p + "/minFilter", "ignored: twinray's textures are not mipmapped; bilinear");
     }
   }
 
-  // --- geometry through Assimp ---
+  // A primitive written as a PLY file ("" when it has no triangles), with its object-space
+  // bounds.
+  struct PrimitivePly {
+    std::string file;
+    bool normals = false;
+    glm::dvec3 lo{HUGE_VAL}, hi{-HUGE_VAL};
+  };
 
-  void load_geometry() {
-    // Assimp's glTF 2.0 importer makes one aiMesh per primitive, meshes in order and their
-    // primitives in order (glTF2Importer::ImportMeshes), strips and fans as triangles.
-    try {
-      meshes_ = read_geometry_with_assimp(path_);
-    } catch (const std::runtime_error& e) {
-      fail(Location{path_, 0}, "Assimp cannot read the file: ", e.what());
-    }
-    const json& meshes = list("meshes");
-    unsigned offset = 0;
-    for (size_t m = 0; m < meshes.size(); ++m) {
-      std::string p = "/meshes/" + std::to_string(m);
-      const json* prims = member(object(meshes[m], p), "primitives");
-      if (!prims) bad(p, "\"primitives\" is required");
-      mesh_offsets_.push_back(offset);
-      offset += unsigned(array(*prims, p + "/primitives").size());
-    }
-    if (offset != meshes_.size())
-      fail(Location{path_, 0}, "Assimp read ", meshes_.size(), " primitives where the file has ",
-           offset);
-  }
-
-  // The PLY file of Assimp mesh `i` (written once; scenes/assimp/imported_ply.h).
-  std::string ply_file(unsigned i) {
-    auto it = plys_.find(i);
+  // meshes[m].primitives[k] as a PLY file, written once for each winding (scenes/assimp/
+  // imported_ply.h). Spec "Meshes": a node whose global transform has a negative determinant
+  // turns its triangles clockwise; written reversed, so that the front faces stay the
+  // counter-clockwise ones after the mirroring transform.
+  const PrimitivePly& ply_file(size_t m, size_t k, bool reversed) {
+    auto key = std::make_tuple(m, k, reversed);
+    auto it = plys_.find(key);
     if (it != plys_.end()) return it->second;
-    fs::path file = work_ / ("gltf_mesh_" + std::to_string(i) + ".ply");
-    // Assimp stores glTF's v as 1 - v (glTF2Importer flips it to its bottom-left origin);
-    // undone here: glTF's uv origin is the image's top-left (spec "Images"), as Mitsuba's.
-    try {
-      write_imported_ply(meshes_[i], file, "written by twinray from a glTF primitive",
-                         TextureV::Flipped);
-    } catch (const std::runtime_error& e) {
-      fail(Location{path_, 0}, e.what());
+    ImportedMesh mesh = accessors_->primitive(m, k);
+    PrimitivePly out;
+    out.normals = !mesh.normals.empty();
+    for (size_t v = 0; v + 2 < mesh.positions.size(); v += 3) {
+      glm::dvec3 x(mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2]);
+      if (!glm::all(glm::isnan(x))) out.lo = glm::min(out.lo, x), out.hi = glm::max(out.hi, x);
     }
-    return plys_[i] = file.string();
+    if (!mesh.triangles.empty()) {
+      if (reversed)
+        for (size_t t = 0; t < mesh.triangles.size(); t += 3)
+          std::swap(mesh.triangles[t + 1], mesh.triangles[t + 2]);
+      out.file = (work_ / ("gltf_mesh_" + std::to_string(plys_.size()) + ".ply")).string();
+      try {
+        write_imported_ply(mesh, out.file, "written by twinray from a glTF primitive",
+                           TextureV::AsRead);
+      } catch (const std::runtime_error& e) {
+        fail(Location{path_, 0}, e.what());
+      }
+    }
+    return plys_.emplace(key, std::move(out)).first->second;
   }
 
   // --- scene graph (spec "Nodes and Hierarchy") ---
@@ -372,11 +374,13 @@ class Importer : JsonNodeBuilder {
   void add_mesh(size_t m, const glm::dmat4& world, const std::string& node_pointer) {
     std::string p = "/meshes/" + std::to_string(m);
     const json& mesh = list("meshes")[m];
-    known(mesh, p, {"primitives"});
-    const json& prims = mesh["primitives"];
-    for (size_t k = 0; k < prims.size(); ++k) {
+    known(object(mesh, p), p, {"primitives"});
+    const json* prims = member(mesh, "primitives");
+    if (!prims) bad(p, "\"primitives\" is required");
+    array(*prims, p + "/primitives");
+    for (size_t k = 0; k < prims->size(); ++k) {
       std::string pp = p + "/primitives/" + std::to_string(k);
-      const json& prim = object(prims[k], pp);
+      const json& prim = object((*prims)[k], pp);
       known(prim, pp, {"attributes", "indices", "material", "mode"});
       int mode = int(number_or(prim, "mode", kTriangles, pp));
       if (mode != kTriangles && mode != kTriangleStrip && mode != kTriangleFan) {
@@ -402,17 +406,16 @@ class Importer : JsonNodeBuilder {
         else
           warn(ap, "attribute not supported by twinray, ignored");
       }
-      unsigned ai = mesh_offsets_[m] + unsigned(k);
-      const ImportedMesh& am = meshes_[ai];
-      if (am.points_or_lines) bad(pp, "Assimp read points or lines from a triangle primitive");
-      if (am.triangles.empty()) {
+      const PrimitivePly& ply = ply_file(m, k, glm::determinant(world) < 0.0);
+      if (ply.file.empty()) {
         warn(pp, "no triangles, ignored");
         continue;
       }
       NodePtr s = make("shape", "ply", pp);
-      add(*s, "filename", PropertyKind::String, pp).text = ply_file(ai);
+      add(*s, "filename", PropertyKind::String, pp).text = ply.file;
+      grow_bounds(ply, world);
       // Spec "Meshes": without NORMAL, flat normals.
-      if (am.normals.empty()) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
+      if (!ply.normals) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
       add_transform(*s, world, node_pointer);
       long long material = -1;
       if (const json* mi = member(prim, "material"))
@@ -454,9 +457,6 @@ class Importer : JsonNodeBuilder {
     if (what == Bake::Normal) fields.insert("scale");
     if (const json* tc = member(info, "texCoord"); tc && !(tc->is_number_integer() && *tc == 0))
       warn(p + "/texCoord", "ignored: only TEXCOORD_0 is read; the map is read with it");
-    if (const json* e = member(info, "extensions"); e && e->contains("KHR_texture_transform"))
-      warn(p + "/extensions/KHR_texture_transform",
-           "texture transforms are not supported by twinray, ignored");
     for (const auto& [key, value] : info.items())
       if (!fields.count(key) && key != "extensions" && key != "extras")
         warn(p + "/" + key, "not supported by twinray, ignored");
@@ -474,102 +474,80 @@ class Importer : JsonNodeBuilder {
     if (!source) bad(tp, "no \"source\" image (twinray reads no texture extension images)");
     size_t image = size_t(index(*source, tp + "/source", list("images").size()));
     NodePtr bitmap = make("texture", "bitmap", p);
-    add(*bitmap, "filename", PropertyKind::String, p).text = baked(image, what, factor, p);
+    add(*bitmap, "filename", PropertyKind::String, p).text = baked(image, what, factor);
     add(*bitmap, "raw", PropertyKind::Boolean, p).boolean = true;  // PFM: linear values
+    if (const json* s = member(tex, "sampler"))
+      sampler(*bitmap, size_t(index(*s, tp + "/sampler", list("samplers").size())), p);
+    if (const json* e = member(info, "extensions"))
+      if (const json* tt = member(*e, "KHR_texture_transform"))
+        texture_transform(*bitmap, *tt, p + "/extensions/KHR_texture_transform");
     return bitmap;
   }
 
-  // Base64 (RFC 4648 section 4) of a data: URI.
-  std::string base64(const std::string& s, const std::string& p) const {
-    std::string out;
-    uint32_t acc = 0;
-    int bits = 0;
-    for (char c : s) {
-      int v = c >= 'A' && c <= 'Z'   ? c - 'A'
-              : c >= 'a' && c <= 'z' ? c - 'a' + 26
-              : c >= '0' && c <= '9' ? c - '0' + 52
-              : c == '+'             ? 62
-              : c == '/'             ? 63
-                                     : -1;
-      if (c == '=') break;
-      if (v < 0) bad(p, "invalid base64 in a data URI");
-      acc = (acc << 6) | uint32_t(v);
-      bits += 6;
-      if (bits >= 8) {
-        bits -= 8;
-        out += char((acc >> bits) & 0xFF);
-      }
-    }
-    return out;
+  // Spec "Samplers": wrapS and wrapT (10497 REPEAT, the default, 33648 MIRRORED_REPEAT, 33071
+  // CLAMP_TO_EDGE) as Mitsuba's bitmap wrap_mode, magFilter 9728 NEAREST as its filter_type.
+  void sampler(Node& bitmap, size_t i, const std::string& p) {
+    std::string sp = "/samplers/" + std::to_string(i);
+    const json& s = list("samplers")[i];
+    auto wrap = [&](const char* key) {
+      long long w = (long long)number_or(s, key, 10497, sp);
+      if (w != 10497 && w != 33648 && w != 33071)
+        bad(sp + "/" + key, "expected 10497, 33648 or 33071, not ", w);
+      return w == 33071 ? "clamp" : w == 33648 ? "mirror" : "repeat";
+    };
+    std::string wrap_s = wrap("wrapS"), wrap_t = wrap("wrapT");
+    if (wrap_s != wrap_t)
+      warn(sp + "/wrapT", "approximate: twinray's bitmaps wrap u and v alike; wrapS (", wrap_s,
+           ") used for both");
+    if (wrap_s != "repeat") add(bitmap, "wrap_mode", PropertyKind::String, p).text = wrap_s;
+    if (const json* m = member(s, "magFilter"); m && *m == 9728)
+      add(bitmap, "filter_type", PropertyKind::String, p).text = "nearest";
   }
 
-  // The bytes a URI names (spec "URIs": a data URI or a path relative to the file).
-  std::string uri_bytes(const std::string& uri, const std::string& p) const {
-    if (uri.rfind("data:", 0) == 0) {
-      size_t comma = uri.find(',');
-      if (comma == std::string::npos || uri.compare(comma - 7, 7, ";base64") != 0)
-        bad(p, "only base64 data URIs are supported");
-      return base64(uri.substr(comma + 1), p);
+  // KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv, the extension's matrices
+  // (its README, "Overview"), as the bitmap's to_uv.
+  void texture_transform(Node& bitmap, const json& t, const std::string& p) {
+    known(object(t, p), p, {"offset", "rotation", "scale", "texCoord"});
+    if (const json* tc = member(t, "texCoord"); tc && !(tc->is_number_integer() && *tc == 0))
+      warn(p + "/texCoord", "ignored: only TEXCOORD_0 is read; the map is read with it");
+    glm::dvec2 offset(0.0), scale(1.0);
+    if (const json* o = member(t, "offset")) {
+      std::vector<double> v = numbers(*o, p + "/offset", 2);
+      offset = {v[0], v[1]};
     }
-    std::string name;  // percent-decoded (RFC 3986 section 2.1)
-    for (size_t i = 0; i < uri.size(); ++i) {
-      if (uri[i] == '%' && i + 2 < uri.size()) {
-        name += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-        i += 2;
-      } else {
-        name += uri[i];
-      }
+    if (const json* s = member(t, "scale")) {
+      std::vector<double> v = numbers(*s, p + "/scale", 2);
+      scale = {v[0], v[1]};
     }
-    fs::path file = out_.parsed.resolver.resolve(name, dir_);
-    std::error_code ec;
-    if (file.empty() || !fs::is_regular_file(file, ec)) bad(p, "file \"", name, "\" not found");
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream b;
-    b << in.rdbuf();
-    return b.str();
+    double r = number_or(t, "rotation", 0.0, p);
+    glm::dmat4 m(1.0);
+    m[0][0] = std::cos(r) * scale.x, m[0][1] = std::sin(r) * scale.x;
+    m[1][0] = -std::sin(r) * scale.y, m[1][1] = std::cos(r) * scale.y;
+    m[3][0] = offset.x, m[3][1] = offset.y;
+    add(bitmap, "to_uv", PropertyKind::Transform, p).matrix = m;
   }
 
-  std::string image_bytes(size_t i, const std::string& p) {
+  std::string image_bytes(size_t i) {
     std::string ip = "/images/" + std::to_string(i);
     const json& img = object(list("images")[i], ip);
     known(img, ip, {"uri", "mimeType", "bufferView"});
-    if (const json* u = member(img, "uri")) return uri_bytes(text(*u, ip + "/uri"), ip + "/uri");
+    if (const json* u = member(img, "uri"))
+      return buffers_->uri_bytes(text(*u, ip + "/uri"), ip + "/uri");
     const json* bv = member(img, "bufferView");
     if (!bv) bad(ip, "neither \"uri\" nor \"bufferView\"");
-    size_t v = size_t(index(*bv, ip + "/bufferView", list("bufferViews").size()));
-    std::string vp = "/bufferViews/" + std::to_string(v);
-    const json& view = object(list("bufferViews")[v], vp);
-    const json* b = member(view, "buffer");
-    const json* len = member(view, "byteLength");
-    if (!b || !len) bad(vp, "\"buffer\" and \"byteLength\" are required");
-    size_t bi = size_t(index(*b, vp + "/buffer", list("buffers").size()));
-    long long offset = (long long)number_or(view, "byteOffset", 0, vp);
-    long long length = (long long)number(*len, vp + "/byteLength");
-    std::string bp = "/buffers/" + std::to_string(bi);
-    const json& buffer = object(list("buffers")[bi], bp);
-    std::string data;
-    if (const json* u = member(buffer, "uri"))
-      data = uri_bytes(text(*u, bp + "/uri"), bp + "/uri");
-    else if (bi == 0 && have_glb_bin_)
-      data = glb_bin_;  // spec "GLB-stored Buffer"
-    else
-      bad(bp, "no \"uri\" and no GLB BIN chunk");
-    if (offset < 0 || length < 0 || size_t(offset + length) > data.size())
-      bad(vp, "bytes ", offset, "..", offset + length, " lie outside the buffer (", data.size(),
-          " bytes)");
-    (void)p;
-    return data.substr(size_t(offset), size_t(length));
+    return std::string(
+        buffers_->view(size_t(index(*bv, ip + "/bufferView", list("bufferViews").size()))));
   }
 
   // Image `i` decoded to linear RGBA (sRGB-decoded when `srgb`: spec "Metallic-Roughness Material",
   // baseColor and emissive textures are sRGB-encoded, the others linear).
-  const Image& image(size_t i, bool srgb, const std::string& p) {
+  const Image& image(size_t i, bool srgb) {
     auto key = std::make_pair(i, srgb);
     auto it = images_.find(key);
     if (it != images_.end()) return it->second;
     fs::path file = work_ / ("gltf_image_" + std::to_string(i));
     if (!fs::exists(file)) {
-      std::string bytes = image_bytes(i, p);
+      std::string bytes = image_bytes(i);
       std::ofstream f(file, std::ios::binary);
       f.write(bytes.data(), std::streamsize(bytes.size()));
       if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
@@ -586,12 +564,12 @@ class Importer : JsonNodeBuilder {
 
   // Writes image `i` as a PFM (Netpbm portable float map: "PF" colour / "Pf" grey, little-endian
   // when the scale is negative, rows bottom to top) holding `what` times `factor`, linear.
-  std::string baked(size_t i, Bake what, glm::dvec3 factor, const std::string& p) {
+  std::string baked(size_t i, Bake what, glm::dvec3 factor) {
     auto key = std::make_tuple(i, int(what), factor.x, factor.y, factor.z);
     auto done = baked_.find(key);
     if (done != baked_.end()) return done->second;
     fs::path file = work_ / ("gltf_texture_" + std::to_string(baked_.size()) + ".pfm");
-    const Image& img = image(i, what == Bake::Color, p);
+    const Image& img = image(i, what == Bake::Color);
     bool color = what == Bake::Color || what == Bake::Normal;
     std::ofstream f(file, std::ios::binary);
     f << (color ? "PF" : "Pf") << "\n" << img.width << " " << img.height << "\n-1.0\n";
@@ -710,7 +688,10 @@ class Importer : JsonNodeBuilder {
         std::string ip = p + "/extensions/KHR_materials_ior";
         known(object(*i, ip), ip, {"ior"});
         double ior = number_or(*i, "ior", 1.5, ip);
-        if (!(ior > 1.0)) bad(ip + "/ior", "twinray's principled needs an ior above 1");
+        // ior = 1: an index-matched interface (principled's eta; Mitsuba's principled takes
+        // 1.001 where its spec_trans lobe is on).
+        if (!(ior >= 1.0 && std::isfinite(ior)))
+          bad(ip + "/ior", "must be at least 1 (twinray's principled reads no other ior)");
         add_float(*bsdf, "eta", ior, ip);
       }
       if (const json* s = member(*e, "KHR_materials_emissive_strength")) {
@@ -768,7 +749,7 @@ class Importer : JsonNodeBuilder {
       map(*t, ep, Bake::Color, glm::dvec3(1.0));  // checks and reports the reference
       const json& tex = list("textures")[(*t)["index"].get<size_t>()];
       size_t img = tex["source"].get<size_t>();
-      const Image& im = image(img, true, ep);
+      const Image& im = image(img, true);
       glm::dvec3 mean(0.0);
       for (const glm::vec4& c : im.texels) mean += glm::dvec3(c);
       mean /= double(std::max<size_t>(im.texels.size(), 1));
@@ -855,19 +836,35 @@ class Importer : JsonNodeBuilder {
   // --- camera (spec "Cameras") and integrator ---
 
   void add_sensor() {
-    const json& cameras = list("cameras");
-    if (camera_nodes_.empty())
-      bad("",
-          "no node of the scene has a camera: twinray renders through the file's first "
-          "camera node (glTF 2.0 spec, Cameras)");
-    size_t node = camera_nodes_.front();
-    for (size_t k = 1; k < camera_nodes_.size(); ++k)
-      warn("/nodes/" + std::to_string(camera_nodes_[k]) + "/camera",
-           "ignored: twinray renders through the first camera node, nodes[", node, "]");
+    const std::string& choice = options_.camera;
+    if (choice == "auto" || (choice.empty() && camera_nodes_.empty())) {
+      if (choice.empty())
+        warn("",
+             "no node of the scene has a camera: rendered through a camera framing the scene's "
+             "bounds (--camera auto)");
+      add_framing_sensor();
+      return;
+    }
+    size_t node = camera_nodes_.empty() ? 0 : camera_nodes_.front();
+    if (!choice.empty()) {
+      const size_t n = std::stoul(choice), count = list("cameras").size();
+      if (n >= count) fail(at("/cameras"), "--camera ", n, ": the file has ", count, " cameras");
+      auto uses = [&](size_t i) { return list("nodes")[i]["camera"] == n; };
+      auto it = std::find_if(camera_nodes_.begin(), camera_nodes_.end(), uses);
+      if (it == camera_nodes_.end())
+        fail(at("/cameras/" + std::to_string(n)), "--camera ", n,
+             ": no node of the scene uses cameras[", n, "]");
+      node = *it;
+    } else {
+      for (size_t k = 1; k < camera_nodes_.size(); ++k)
+        warn("/nodes/" + std::to_string(camera_nodes_[k]) + "/camera",
+             "ignored: twinray renders through the first camera node, nodes[", node,
+             "] (--camera N chooses cameras[N])");
+    }
     std::string np = "/nodes/" + std::to_string(node);
     size_t ci = size_t(list("nodes")[node]["camera"].get<long long>());
     std::string p = "/cameras/" + std::to_string(ci);
-    const json& c = object(cameras[ci], p);
+    const json& c = object(list("cameras")[ci], p);
     known(c, p, {"type", "perspective", "orthographic"});
     const json* type = member(c, "type");
     if (!type) bad(p, "\"type\" is required");
@@ -909,6 +906,15 @@ class Importer : JsonNodeBuilder {
       aspect = number(*a, pp + "/aspectRatio");
       if (!(aspect > 0.0)) bad(pp + "/aspectRatio", "must be positive");
     }
+    add_film_and_sampler(*sensor, aspect, pp + "/aspectRatio", p);
+    add_object(*root_, sensor, p);
+  }
+
+  // The image size (-D width and height, else the camera's aspect ratio at Mitsuba's default
+  // height, else Mitsuba's default size), the film and the sampler of `sensor`; returns the
+  // image's aspect ratio.
+  double add_film_and_sampler(Node& sensor, double aspect, const std::string& aspect_pointer,
+                              const std::string& p) {
     bool have_w = false, have_h = false;
     long long width = define("width", 0, &have_w), height = define("height", 0, &have_h);
     if (!have_h)
@@ -917,17 +923,51 @@ class Importer : JsonNodeBuilder {
     if (!have_w)
       width = aspect > 0.0 ? std::max(1LL, std::llround(height * aspect)) : kDefaultWidth;
     if (have_w && have_h && aspect > 0.0 && std::abs(double(width) / height - aspect) > 1e-2)
-      warn(pp + "/aspectRatio", "the image is ", width, "x", height,
+      warn(aspect_pointer, "the image is ", width, "x", height,
            " (-D width, height): yfov is kept, the horizontal field of view follows the image");
     NodePtr film = make("film", "hdrfilm", p);
     add(*film, "width", PropertyKind::Integer, p).integer = width;
     add(*film, "height", PropertyKind::Integer, p).integer = height;
     add(*film, "component_format", PropertyKind::String, p).text = "float32";
-    add_object(*sensor, film, p);
+    add_object(sensor, film, p);
     NodePtr sampler = make("sampler", "independent", p);
     add(*sampler, "sample_count", PropertyKind::Integer, p).integer = define("spp", kDefaultSpp);
-    add_object(*sensor, sampler, p);
-    add_object(*root_, sensor, p);
+    add_object(sensor, sampler, p);
+    return double(width) / double(height);
+  }
+
+  // --camera auto, as glTF viewers frame a model: a perspective camera of vertical field of
+  // view kAutoYfov looking down -z (+y up) at the centre c of the shapes' world bounds, at the
+  // distance d = r / sin(fov / 2) from it at which the bounding sphere (radius r, half the
+  // bounds' diagonal) fits the narrower of the two fields of view.
+  void add_framing_sensor() {
+    if (!(lo_.x <= hi_.x) || !(glm::length(hi_ - lo_) > 0.0) ||
+        !std::isfinite(glm::length(hi_ - lo_)))
+      bad("", "--camera auto: the scene has no finite extent to frame");
+    glm::dvec3 c = 0.5 * (lo_ + hi_);
+    double r = 0.5 * glm::length(hi_ - lo_);
+    NodePtr sensor = make("sensor", "perspective", "");
+    double aspect = add_film_and_sampler(*sensor, 0.0, "", "");
+    double yfov = glm::radians(kAutoYfov);
+    double xfov = 2.0 * std::atan(std::tan(0.5 * yfov) * aspect);
+    double d = r / std::sin(0.5 * std::min(yfov, xfov));
+    add_float(*sensor, "fov", kAutoYfov, "");
+    add(*sensor, "fov_axis", PropertyKind::String, "").text = "y";
+    add_float(*sensor, "near_clip", 0.5 * (d - r), "");
+    add_float(*sensor, "far_clip", 2.0 * (d + r), "");
+    glm::dvec3 origin = c + glm::dvec3(0.0, 0.0, d);
+    add_transform(*sensor, look_at(origin, c, {0.0, 1.0, 0.0}, at("")), "");
+    add_object(*root_, sensor, "");
+  }
+
+  void grow_bounds(const PrimitivePly& ply, const glm::dmat4& world) {
+    if (!(ply.lo.x <= ply.hi.x)) return;
+    for (int corner = 0; corner < 8; ++corner) {
+      glm::dvec3 x((corner & 1 ? ply.hi : ply.lo).x, (corner & 2 ? ply.hi : ply.lo).y,
+                   (corner & 4 ? ply.hi : ply.lo).z);
+      glm::dvec3 w(world * glm::dvec4(x, 1.0));
+      lo_ = glm::min(lo_, w), hi_ = glm::max(hi_, w);
+    }
   }
 
   void add_integrator() {
@@ -942,9 +982,10 @@ class Importer : JsonNodeBuilder {
   std::string glb_bin_;
   bool have_glb_bin_ = false;
   json doc_;
-  ImportedGeometry meshes_;
-  std::vector<unsigned> mesh_offsets_;
-  std::map<unsigned, std::string> plys_;
+  std::unique_ptr<GltfBuffers> buffers_;
+  std::unique_ptr<GltfAccessors> accessors_;
+  std::map<std::tuple<size_t, size_t, bool>, PrimitivePly> plys_;
+  glm::dvec3 lo_{HUGE_VAL}, hi_{-HUGE_VAL};  // the world-space bounds of the shapes
   std::map<std::pair<size_t, bool>, Image> images_;
   std::map<std::tuple<size_t, int, double, double, double>, std::string> baked_;
   std::map<long long, MaterialNodes> materials_;

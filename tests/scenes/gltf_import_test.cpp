@@ -12,6 +12,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "gltf_test_support.h"
 #include "scene_test_files.h"
 #include "scenes/bitmap.h"
 
@@ -19,20 +20,8 @@ namespace tr {
 namespace {
 
 using namespace testing_files;
+using namespace gltf_test;
 using json = nlohmann::json;
-
-std::string base64(const std::string& bytes) {
-  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
-    if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
-    if (i + 2 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 2]));
-    size_t n = std::min<size_t>(3, bytes.size() - i);  // RFC 4648 section 4: pad with '='
-    for (size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63] : '=';
-  }
-  return out;
-}
 
 // One triangle (0,0,0) (1,0,0) (0,1,0) with uv (0,0) (1,0) (0,1), as a data: URI buffer.
 json triangle_gltf() {
@@ -80,47 +69,6 @@ json triangle_gltf() {
                {"max", {1, 1, 0}}},
               {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}}};
   return g;
-}
-
-struct Imported {
-  GltfScene scene;
-  std::filesystem::path dir;
-};
-
-Imported import(const json& g, const LoadOptions& options = {}) {
-  std::filesystem::path dir = fresh_dir();
-  std::filesystem::create_directories(dir / "work");
-  std::string path = write_file(dir, "scene.gltf", g.dump(1));
-  return {import_gltf(path, options, dir / "work"), dir};
-}
-
-std::vector<const Node*> all(const Node& n, const std::string& tag, const std::string& type) {
-  std::vector<const Node*> out;
-  if (n.tag == tag && n.type == type) out.push_back(&n);
-  for (const Property& p : n.props)
-    if (p.kind == PropertyKind::Object)
-      for (const Node* c : all(*p.object, tag, type))
-        if (std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
-  return out;
-}
-
-const Node& one(const Node& root, const std::string& tag, const std::string& type) {
-  std::vector<const Node*> v = all(root, tag, type);
-  EXPECT_EQ(v.size(), 1u) << tag << " " << type;
-  if (v.empty()) throw std::runtime_error("no " + tag + " " + type);
-  return *v[0];
-}
-
-const Property& prop(const Node& n, const std::string& name) {
-  for (const Property& p : n.props)
-    if (p.name == name) return p;
-  throw std::runtime_error("no property " + name + " on " + n.type);
-}
-
-void expect_vec(glm::dvec3 a, glm::dvec3 b, double tol = 1e-9) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
 }
 
 TEST(GltfImport, TransformsMaterialCameraAndIntegrator) {
@@ -305,6 +253,75 @@ TEST(GltfImport, FieldsThatDoNotMapAreWarnedOneLineEach) {
   }
 }
 
+// --camera auto (the default without a camera node): yfov 45 degrees down -z at the centre c of
+// the world bounds, at d = r / sin(fov / 2) with fov the narrower field of view.
+TEST(GltfImport, WithoutACameraTheBoundsAreFramed) {
+  json g = triangle_gltf();
+  g["nodes"][2].erase("camera");
+  Imported im = import(g);
+  const Node& sensor = one(*im.scene.parsed.root, "sensor", "perspective");
+  EXPECT_EQ(prop(sensor, "fov").number, 45.0);
+  // The triangle's world corners: (1,2,3) + R_z(90) * 2 (x, y, 0): x in [-1, 1], y in [2, 4].
+  glm::dvec3 c(0.0, 3.0, 3.0);
+  double r = std::sqrt(2.0), aspect = 768.0 / 576.0;
+  double xfov = 2.0 * std::atan(std::tan(glm::radians(22.5)) * aspect);
+  double d = r / std::sin(0.5 * std::min(glm::radians(45.0), xfov));
+  const glm::dmat4& cam = prop(sensor, "to_world").matrix;
+  expect_vec(glm::dvec3(cam[3]), c + glm::dvec3(0, 0, d), 1e-9);
+  expect_vec(glm::dvec3(cam[2]), {0, 0, -1});
+  ASSERT_EQ(im.scene.warnings.size(), 1u);
+  EXPECT_NE(im.scene.warnings[0].find("no node of the scene has a camera: rendered through a "
+                                      "camera framing the scene's bounds (--camera auto)"),
+            std::string::npos)
+      << im.scene.warnings[0];
+
+  LoadOptions o;
+  o.camera = "auto";  // asked for: the file's camera is not used, nothing is warned
+  o.defines = {{"width", "100"}, {"height", "400"}};
+  Imported tall = import(triangle_gltf(), o);
+  const Node& s2 = one(*tall.scene.parsed.root, "sensor", "perspective");
+  xfov = 2.0 * std::atan(std::tan(glm::radians(22.5)) * 0.25);
+  expect_vec(glm::dvec3(prop(s2, "to_world").matrix[3]),
+             c + glm::dvec3(0, 0, r / std::sin(0.5 * xfov)));
+  EXPECT_TRUE(tall.scene.warnings.empty());
+}
+
+TEST(GltfImport, CameraNChoosesTheFilesNthCamera) {
+  json g = triangle_gltf();
+  g["cameras"].push_back(
+      {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.5}}}});
+  g["nodes"].push_back({{"camera", 1}, {"translation", {0.0, 7.0, 0.0}}});
+  g["scenes"][0]["nodes"].push_back(3);
+  Imported first = import(g);
+  EXPECT_NEAR(prop(one(*first.scene.parsed.root, "sensor", "perspective"), "fov").number,
+              glm::degrees(0.5), 1e-12);
+  ASSERT_EQ(first.scene.warnings.size(), 1u);
+  EXPECT_NE(first.scene.warnings[0].find("nodes[3].camera: ignored: twinray renders through the "
+                                         "first camera node, nodes[2] (--camera N chooses"),
+            std::string::npos);
+  LoadOptions o;
+  o.camera = "1";
+  Imported second = import(g, o);
+  const Node& sensor = one(*second.scene.parsed.root, "sensor", "perspective");
+  EXPECT_NEAR(prop(sensor, "fov").number, glm::degrees(1.0), 1e-12);
+  expect_vec(glm::dvec3(prop(sensor, "to_world").matrix[3]), {0, 7, 0});
+  EXPECT_TRUE(second.scene.warnings.empty());
+  for (const char* bad : {"2", "1"}) {
+    if (std::string(bad) == "1") g["scenes"][0]["nodes"].erase(2);  // cameras[1] on no node
+    o.camera = bad;
+    try {
+      import(g, o);
+      ADD_FAILURE() << "--camera " << bad << " accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(
+                    std::string(bad) == "2" ? "--camera 2: the file has 2 cameras"
+                                            : "--camera 1: no node of the scene uses cameras[1]"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 std::string load_error(const std::string& name, const std::string& text) {
   std::filesystem::path dir = fresh_dir();
   std::string path = write_file(dir, name, text);
@@ -326,16 +343,19 @@ TEST(GltfImport, MalformedFilesGiveOneLineErrors) {
             0u);
   json g = triangle_gltf();
   g["buffers"][0]["uri"] = "missing.bin";
-  EXPECT_NE(load_error("nobuffer.gltf", g.dump(1)).find("Assimp cannot read the file"),
-            std::string::npos);
+  EXPECT_NE(
+      load_error("nobuffer.gltf", g.dump(1)).find("buffers[0].uri: file \"missing.bin\" not found"),
+      std::string::npos);
   json v = triangle_gltf();
   v["asset"]["version"] = "1.0";
   EXPECT_NE(load_error("old.gltf", v.dump(1)).find("asset.version: glTF 1.0 is not glTF 2.x"),
             std::string::npos);
   json c = triangle_gltf();
   c["nodes"][2].erase("camera");
-  EXPECT_NE(load_error("nocamera.gltf", c.dump(1)).find("no node of the scene has a camera"),
-            std::string::npos);
+  c["meshes"][0]["primitives"][0]["mode"] = 0;  // points: nothing to frame
+  EXPECT_NE(
+      load_error("nocamera.gltf", c.dump(1)).find("--camera auto: the scene has no finite extent"),
+      std::string::npos);
   EXPECT_NE(load_error("bad.glb", "glTF\x02").find("truncated GLB header"), std::string::npos);
 }
 
