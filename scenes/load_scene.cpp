@@ -159,9 +159,11 @@ Scene build_scene(const std::string& path, const LoadOptions& options) {
     return scene;
   }
   ParsedScene parsed = parse_scene_xml(path, options);
+  std::vector<std::string> warnings = parsed.warnings;
   adjust(*parsed.root, options);
-  SceneBuilder builder(std::move(parsed), path);
-  return builder.build();
+  Scene scene = SceneBuilder(std::move(parsed), path).build();
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return scene;
 }
 
 }  // namespace

@@ -176,7 +176,7 @@ check include_cycle 3 'cycle_.\.xml:[0-9]+: .*(cycle|recurs|itself)' -- $(r incl
 check unknown_ref 3 'unknown_ref\.xml:[0-9]+: .*nothing' -- $(r unknown_ref)
 check duplicate_id 3 'duplicate_id\.xml:[0-9]+: .*"?a"?' -- $(r duplicate_id)
 check bad_version 3 'bad_version\.xml:[0-9]+: .*version' -- $(r bad_version)
-check mitsuba_0_scene_upgraded 0 'twinray: 8x8' -- $(r old_version)
+check mitsuba_0_scene_upgraded 0 'old_version\.xml:[0-9]+: scene version 0\.[0-9.]+ upgraded on load' -- $(r old_version)
 check two_part_version 3 'version_0\.6\.xml:[0-9]+: .*three period-separated numbers' -- $(r version_0.6)
 check four_part_version 3 'version_0\.6\.0\.0\.xml:[0-9]+: .*three period-separated numbers' -- $(r version_0.6.0.0)
 check huge_version 3 'version_9+\.0\.0\.xml:[0-9]+: .*after Mitsuba 3' -- $(r version_99999999999999999999.0.0)
