@@ -1,6 +1,8 @@
 #include "scenes/json_node_builder.h"
 
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "scenes/scn/json_lines.h"
 
@@ -20,6 +22,7 @@ nlohmann::json JsonNodeBuilder::parse_document(const std::string& text) {
   }
   JsonLines lines = json_value_lines(text);
   lines_ = lines.lines;
+  bytes_ = lines.bytes;
   if (lines.too_deep)
     fail(Location{path_, lines.too_deep}, "arrays and objects nested deeper than ", kJsonMaxDepth,
          " levels");
@@ -51,6 +54,39 @@ std::string JsonNodeBuilder::field(const std::string& pointer) {
     i = j + 1;
   }
   return out.empty() ? "the scene" : out;
+}
+
+std::string JsonNodeBuilder::byte_note(std::string pointer) const {
+  if (!byte_offsets_) return "";
+  for (;;) {
+    auto it = bytes_.find(pointer);
+    if (it != bytes_.end()) return " (JSON chunk byte " + std::to_string(it->second) + ")";
+    if (pointer.empty()) return "";
+    pointer = pointer.substr(0, pointer.rfind('/'));
+  }
+}
+
+std::string JsonNodeBuilder::shape(const std::string& pointer) {
+  std::string out = field(pointer);
+  for (size_t open = out.find('['); open != std::string::npos; open = out.find('[', open + 1))
+    out.replace(open + 1, out.find(']', open) - open - 1, "*");
+  return out;
+}
+
+std::vector<std::string> JsonNodeBuilder::take_warnings() {
+  std::map<std::string, size_t> count;
+  for (const Warning& w : warnings_) ++count[w.key];
+  std::vector<std::string> out;
+  std::set<std::string> said;
+  for (const Warning& w : warnings_) {
+    if (!said.insert(w.key).second) continue;
+    size_t n = count[w.key];
+    out.push_back(n == 1 ? w.line
+                         : w.line + " (x " + std::to_string(n) + ": " +
+                               w.key.substr(0, w.key.find('\n')) + ")");
+  }
+  warnings_.clear();
+  return out;
 }
 
 const nlohmann::json& JsonNodeBuilder::object(const json& v, const std::string& pointer) const {

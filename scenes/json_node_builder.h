@@ -33,21 +33,32 @@ class JsonNodeBuilder {
   // The line of `pointer`, else of its nearest ancestor with a known line.
   Location at(std::string pointer) const;
   static std::string field(const std::string& pointer);
+  // " (JSON chunk byte N)" where the value of `pointer` (or its nearest ancestor) starts, when
+  // byte_offsets_ is set (a GLB's JSON chunk, whose lines say little); else "".
+  std::string byte_note(std::string pointer) const;
+  // field() with every array index written as "*".
+  static std::string shape(const std::string& pointer);
 
   template <typename... Parts>
   [[noreturn]] void bad(const std::string& pointer, const Parts&... parts) const {
-    fail(at(pointer), field(pointer), ": ", parts...);
+    fail(at(pointer), field(pointer), byte_note(pointer), ": ", parts...);
   }
 
-  // One "file:line: field: ..." line in warnings_, each distinct line once.
+  // One "file:line: field: what" warning, each distinct line once.
   template <typename... Parts>
   void warn(const std::string& pointer, const Parts&... parts) {
-    std::ostringstream os;
-    os << to_string(at(pointer)) << ": " << field(pointer) << ": ";
-    (os << ... << parts);
-    std::string line = os.str();
-    if (warned_.insert(line).second) warnings_.push_back(line);
+    std::ostringstream what;
+    (what << ... << parts);
+    std::string line =
+        to_string(at(pointer)) + ": " + field(pointer) + byte_note(pointer) + ": " + what.str();
+    if (warned_.insert(line).second)
+      warnings_.push_back({line, shape(pointer) + "\n" + what.str()});
   }
+
+  // The warnings, those that differ only in their fields' array indices collapsed into their
+  // first, which says how many there are and the fields' shape ("(x 20: meshes[*].primitives[*]
+  // .attributes.TANGENT)").
+  std::vector<std::string> take_warnings();
 
   // --- typed reads (each failure names the field) ---
 
@@ -66,8 +77,14 @@ class JsonNodeBuilder {
   void add_transform(Node& n, const glm::dmat4& m, const std::string& pointer) const;
 
   std::string path_;
-  std::map<std::string, int> lines_;  // JSON pointer -> line
-  std::vector<std::string> warnings_;
+  std::map<std::string, int> lines_;     // JSON pointer -> line
+  std::map<std::string, size_t> bytes_;  // JSON pointer -> byte offset
+  bool byte_offsets_ = false;
+  struct Warning {
+    std::string line;
+    std::string key;  // the field's shape and the message
+  };
+  std::vector<Warning> warnings_;
 
  private:
   std::set<std::string> warned_;

@@ -81,7 +81,7 @@ class Importer : JsonNodeBuilder {
     } catch (const GltfFieldError& e) {
       bad(e.pointer, e.what());
     }
-    out_.warnings = std::move(warnings_);
+    out_.warnings = take_warnings();
     return std::move(out_);
   }
 
@@ -179,6 +179,7 @@ class Importer : JsonNodeBuilder {
       glb_bin_ = s.substr(bin + 8, n);
       have_glb_bin_ = true;
     }
+    byte_offsets_ = true;
     return s.substr(20, json_length);
   }
 
@@ -571,11 +572,16 @@ class Importer : JsonNodeBuilder {
     fs::path file = work_ / ("gltf_texture_" + std::to_string(baked_.size()) + ".pfm");
     const Image& img = image(i, what == Bake::Color);
     bool color = what == Bake::Color || what == Bake::Normal;
+    // A row or column of texels is written twice (N x 2 or 2 x N): the same bilinear lookups,
+    // and a size Mitsuba's bitmap reads without resampling (scenes/build_materials.cpp).
+    const int rows = img.height == 1 && img.width > 1 ? 2 : 1;
+    const int columns = img.width == 1 && img.height > 1 ? 2 : 1;
     std::ofstream f(file, std::ios::binary);
-    f << (color ? "PF" : "Pf") << "\n" << img.width << " " << img.height << "\n-1.0\n";
-    for (int y = img.height - 1; y >= 0; --y) {
-      for (int x = 0; x < img.width; ++x) {
-        glm::vec4 c = img.texels[size_t(y) * img.width + x];
+    f << (color ? "PF" : "Pf") << "\n"
+      << img.width * columns << " " << img.height * rows << "\n-1.0\n";
+    for (int y = img.height * rows - 1; y >= 0; --y) {
+      for (int x = 0; x < img.width * columns; ++x) {
+        glm::vec4 c = img.texels[size_t(y / rows) * img.width + size_t(x / columns)];
         if (what == Bake::Color) {
           for (int k = 0; k < 3; ++k) {
             float v = float(c[k] * factor[k]);
@@ -910,19 +916,19 @@ class Importer : JsonNodeBuilder {
     add_object(*root_, sensor, p);
   }
 
-  // The image size (-D width and height, else the camera's aspect ratio at Mitsuba's default
-  // height, else Mitsuba's default size), the film and the sampler of `sensor`; returns the
-  // image's aspect ratio.
+  // The image size: -D width and height, the one missing from the other and the camera's aspect
+  // ratio (or Mitsuba's default film's), neither at Mitsuba's default height, the film and the
+  // sampler of `sensor`; returns the image's aspect ratio.
   double add_film_and_sampler(Node& sensor, double aspect, const std::string& aspect_pointer,
                               const std::string& p) {
     bool have_w = false, have_h = false;
     long long width = define("width", 0, &have_w), height = define("height", 0, &have_h);
-    if (!have_h)
-      height =
-          have_w && aspect > 0.0 ? std::max(1LL, std::llround(width / aspect)) : kDefaultHeight;
-    if (!have_w)
-      width = aspect > 0.0 ? std::max(1LL, std::llround(height * aspect)) : kDefaultWidth;
-    if (have_w && have_h && aspect > 0.0 && std::abs(double(width) / height - aspect) > 1e-2)
+    // Spec "Cameras": without aspectRatio, the viewport's (Mitsuba's default film's).
+    const bool stated = aspect > 0.0;
+    if (!stated) aspect = double(kDefaultWidth) / double(kDefaultHeight);
+    if (!have_h) height = have_w ? std::max(1LL, std::llround(width / aspect)) : kDefaultHeight;
+    if (!have_w) width = std::max(1LL, std::llround(height * aspect));
+    if (have_w && have_h && stated && std::abs(double(width) / height - aspect) > 1e-2)
       warn(aspect_pointer, "the image is ", width, "x", height,
            " (-D width, height): yfov is kept, the horizontal field of view follows the image");
     NodePtr film = make("film", "hdrfilm", p);

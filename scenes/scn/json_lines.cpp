@@ -44,6 +44,7 @@ class Scanner {
   void value(const std::string& pointer, int depth = 0) {
     blank();
     if (!out_.lines.emplace(pointer, line_).second) out_.repeated.emplace(pointer, line_);
+    out_.bytes.emplace(pointer, i_);
     if (i_ >= s_.size() || out_.too_deep) return;
     if (depth > kJsonMaxDepth) {
       out_.too_deep = line_;

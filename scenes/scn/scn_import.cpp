@@ -66,7 +66,7 @@ class Importer : JsonNodeBuilder {
     for (const auto& [name, m] : materials_)
       if (!used_.count(name))
         warn(m.pointer, "material \"", name, "\" is used by no entity and no usemtl group");
-    out_.warnings = std::move(warnings_);
+    out_.warnings = take_warnings();
     return std::move(out_);
   }
 
