@@ -41,6 +41,7 @@ const char* kUsage =
     "                      [--seed S] [--threads N] [--backend cpu|gpu] [--device N|NAME]\n"
     "                      [--randomizations K] [--aov LIST] [--emitter-selection S]\n"
     "                      [--envmap FILE [--envmap-scale S] | --constant RGB] [--camera C]\n"
+    "                      [--strict-gltf]\n"
     "  Renders a Mitsuba 3 XML, .scn or glTF 2.0 (.gltf/.glb) scene (-D width, height, spp,\n"
     "  max_depth; scenes/README.md). Writes OUT.exr (mean radiance, RGB in the film's\n"
     "  component_format: float16 unless the scene asks for float32, as Mitsuba),\n"
@@ -73,6 +74,8 @@ const char* kUsage =
     "  --camera C      glTF only: N renders through the file's cameras[N]; auto frames the\n"
     "                  scene's bounds (yfov 45 degrees, looking down -z; the default when no\n"
     "                  node has a camera)\n"
+    "  --strict-gltf   glTF only: refuse the scene (exit 3) where a field does not map\n"
+    "                  exactly, instead of warning (scenes/README.md, glTF 2.0 scenes)\n"
     "  --seed S        random seed (default: the scene's sampler seed, 0 if it sets none);\n"
     "                  same seed => same image on any thread count\n"
     "  --threads N     CPU worker threads (default: all cores)\n"
@@ -180,6 +183,8 @@ RenderArgs parse(int argc, char** argv) {
       a.load.camera = args.value(arg);
       if (!is_camera_choice(a.load.camera))
         throw UsageError("--camera expects auto or a camera index, got '" + a.load.camera + "'");
+    } else if (arg == "--strict-gltf") {
+      a.load.strict_gltf = true;
     } else if (arg == "--aov") {
       a.aov_lists.push_back(args.value(arg));
     } else if (!arg.empty() && arg[0] == '-') {
@@ -192,9 +197,9 @@ RenderArgs parse(int argc, char** argv) {
   }
   if (a.scene.empty()) throw UsageError("no scene file given");
   check_environment(a.load.environment, envmap_scale);
-  if (!a.load.camera.empty() && !is_gltf(a.scene))
-    throw UsageError("--camera chooses among a glTF scene's cameras; '" + a.scene +
-                     "' is not a .gltf or .glb file");
+  if ((!a.load.camera.empty() || a.load.strict_gltf) && !is_gltf(a.scene))
+    throw UsageError(std::string(a.load.strict_gltf ? "--strict-gltf" : "--camera") +
+                     " is for glTF scenes; '" + a.scene + "' is not a .gltf or .glb file");
   if (!a.aov_lists.empty()) {
     std::string joined;  // several --aov options add up
     for (const std::string& list : a.aov_lists) joined += (joined.empty() ? "" : ",") + list;

@@ -44,9 +44,18 @@ class JsonNodeBuilder {
     fail(at(pointer), field(pointer), byte_note(pointer), ": ", parts...);
   }
 
-  // One "file:line: field: what" warning, each distinct line once.
+  // A field that does not map exactly: one "file:line: field: what" warning, each distinct line
+  // once; with strict_, an error.
   template <typename... Parts>
   void warn(const std::string& pointer, const Parts&... parts) {
+    if (strict_) bad(pointer, parts..., " (refused: --strict-gltf)");
+    note(pointer, parts...);
+  }
+
+  // A warning that strict_ does not refuse: what the scene does not use, with no effect on the
+  // quantity rendered, or what twinray chose where the file states nothing.
+  template <typename... Parts>
+  void note(const std::string& pointer, const Parts&... parts) {
     std::ostringstream what;
     (what << ... << parts);
     std::string line =
@@ -80,6 +89,7 @@ class JsonNodeBuilder {
   std::map<std::string, int> lines_;     // JSON pointer -> line
   std::map<std::string, size_t> bytes_;  // JSON pointer -> byte offset
   bool byte_offsets_ = false;
+  bool strict_ = false;
   struct Warning {
     std::string line;
     std::string key;  // the field's shape and the message

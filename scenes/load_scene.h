@@ -27,6 +27,8 @@ struct LoadOptions {
   // --camera, glTF scenes only: "" the file's first camera node (framing the scene when it has
   // none), "auto" framing the scene's bounds, or N the file's cameras[N] (scenes/gltf/).
   std::string camera;
+  // --strict-gltf: a glTF field that does not map exactly is an error instead of a warning.
+  bool strict_gltf = false;
 };
 
 // Parses and builds the scene: a Mitsuba 3 XML file or, by the extension, a `.scn` JSON scene

@@ -48,7 +48,9 @@ enum class Bake { Color, Red, Green, Blue, Alpha, Normal };
 class Importer : JsonNodeBuilder {
  public:
   Importer(const std::string& path, const LoadOptions& options, const fs::path& work_dir)
-      : JsonNodeBuilder(path), options_(options), work_(work_dir) {}
+      : JsonNodeBuilder(path), options_(options), work_(work_dir) {
+    strict_ = options.strict_gltf;
+  }
 
   GltfScene run() {
     std::error_code ec;
@@ -244,7 +246,9 @@ class Importer : JsonNodeBuilder {
       std::string p = "/samplers/" + std::to_string(i);
       known(object(samplers[i], p), p, {"magFilter", "minFilter", "wrapS", "wrapT"});
       if (member(samplers[i], "minFilter"))
-        warn(p + "/minFilter", "ignored: twinray's textures are not mipmapped; bilinear");
+        note(p + "/minFilter",
+             "not used: twinray's path tracer integrates each pixel's footprint by its samples "
+             "instead of mipmapping");
     }
   }
 
@@ -323,7 +327,7 @@ class Importer : JsonNodeBuilder {
     if (const json* s = member(doc_, "scene")) chosen = size_t(index(*s, "/scene", scenes.size()));
     for (size_t i = 0; i < scenes.size(); ++i)
       if (i != chosen)
-        warn("/scenes/" + std::to_string(i), "not the default scene (\"scene\": ", chosen,
+        note("/scenes/" + std::to_string(i), "not the default scene (\"scene\": ", chosen,
              "), ignored");
     std::string p = "/scenes/" + std::to_string(chosen);
     const json& scene = object(scenes[chosen], p);
@@ -642,12 +646,7 @@ class Importer : JsonNodeBuilder {
     if (const json* a = member(m, "alphaMode")) alpha_mode = text(*a, p + "/alphaMode");
     if (alpha_mode != "OPAQUE" && alpha_mode != "MASK" && alpha_mode != "BLEND")
       bad(p + "/alphaMode", "expected OPAQUE, MASK or BLEND");
-    const bool mask = alpha_mode == "MASK";
-    if (alpha_mode == "BLEND") {
-      if (base_alpha != 1.0)
-        warn(pp + "/baseColorFactor", "alpha ignored: twinray renders a BLEND material opaque");
-      warn(p + "/alphaMode", "BLEND ignored: twinray renders the material opaque");
-    }
+    const bool mask = alpha_mode == "MASK", blend = alpha_mode == "BLEND";
     // Spec "Alpha Coverage": alphaCutoff applies in MASK mode only (default 0.5).
     double cutoff = 0.5;
     if (member(m, "alphaCutoff")) {
@@ -719,7 +718,7 @@ class Importer : JsonNodeBuilder {
            "bitangent = normal x tangent) instead of MikkTSpace vertex tangents");
     }
     if (member(m, "occlusionTexture"))
-      warn(p + "/occlusionTexture", "ignored: the path tracer computes occlusion itself");
+      note(p + "/occlusionTexture", "not used: the path tracer computes occlusion itself");
     bool double_sided = false;
     if (const json* d = member(m, "doubleSided")) {
       if (!d->is_boolean()) bad(p + "/doubleSided", "expected true or false");
@@ -734,18 +733,25 @@ class Importer : JsonNodeBuilder {
            "ignored for a transmissive material (Mitsuba's twosided refuses transmission)");
     }
     if (mask && !(cutoff >= 0.0 && cutoff <= 1.0)) bad(p + "/alphaCutoff", "must lie in [0, 1]");
-    if (mask) {
-      // Spec "Alpha Coverage": alpha = baseColorFactor.a x baseColorTexture.a against alphaCutoff,
-      // twinray's alphatest (core/alpha_test.h): absent for every ray where alpha < cutoff.
-      NodePtr outer = make("bsdf", "alphatest", p + "/alphaMode");
-      if (const json* t = member(r, "baseColorTexture"))
+    const json* base_texture = member(r, "baseColorTexture");
+    if (mask || (blend && (base_alpha != 1.0 || base_texture))) {
+      // Spec "Alpha Coverage": alpha = baseColorFactor.a x baseColorTexture.a. MASK: against
+      // alphaCutoff, twinray's alphatest (core/alpha_test.h), absent for every ray where
+      // alpha < cutoff. BLEND: Mitsuba's mask with alpha as its opacity, a surface that camera
+      // and scattered rays cross with probability 1 - alpha and shadow rays do not.
+      NodePtr outer = make("bsdf", mask ? "alphatest" : "mask", p + "/alphaMode");
+      if (base_texture)
         add(*outer, "opacity", PropertyKind::Object, pp + "/baseColorTexture").object =
-            map(*t, pp + "/baseColorTexture", Bake::Alpha, glm::dvec3(base_alpha));
+            map(*base_texture, pp + "/baseColorTexture", Bake::Alpha, glm::dvec3(base_alpha));
       else
         add_float(*outer, "opacity", base_alpha, pp);
-      add_float(*outer, "cutoff", cutoff, p);
+      if (mask) add_float(*outer, "cutoff", cutoff, p);
       add_object(*outer, bsdf, p + "/alphaMode");
       bsdf = outer;
+      if (blend)
+        warn(p + "/alphaMode",
+             "approximate: BLEND as Mitsuba's mask of opacity alpha (light is not transmitted "
+             "to shadow rays; --strict-gltf refuses it)");
     }
     glm::dvec3 emission = rgb(m, "emissiveFactor", glm::dvec3(0.0), p) * strength;
     if (const json* t = member(m, "emissiveTexture")) {
@@ -765,6 +771,10 @@ class Importer : JsonNodeBuilder {
            "the texture's mean (",
            mean.x, ", ", mean.y, ", ", mean.z, ")");
     }
+    if (mask && emission != glm::dvec3(0.0))
+      bad(p,
+          "an emissive MASK material: twinray's alphatest surfaces do not emit "
+          "(core/alpha_test.h)");
     out.emission = emission;
     add_object(*root_, bsdf, p);
     out.bsdf = bsdf;
@@ -845,7 +855,7 @@ class Importer : JsonNodeBuilder {
     const std::string& choice = options_.camera;
     if (choice == "auto" || (choice.empty() && camera_nodes_.empty())) {
       if (choice.empty())
-        warn("",
+        note("",
              "no node of the scene has a camera: rendered through a camera framing the scene's "
              "bounds (--camera auto)");
       add_framing_sensor();

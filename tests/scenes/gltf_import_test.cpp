@@ -242,15 +242,48 @@ TEST(GltfImport, FieldsThatDoNotMapAreWarnedOneLineEach) {
       "extensionsUsed[0]: extension \"KHR_materials_clearcoat\" not supported by twinray",
       "materials[0].extensions.KHR_materials_clearcoat: extension not supported by twinray",
       "meshes[0].primitives[0].attributes.TEXCOORD_1: ignored: only TEXCOORD_0 is read",
-      "materials[0].alphaMode: BLEND ignored: twinray renders the material opaque",
       "materials[0].alphaCutoff: ignored: the material's alphaMode is not MASK",
-      "materials[0].occlusionTexture: ignored"};
+      "materials[0].occlusionTexture: not used"};
   ASSERT_EQ(im.scene.warnings.size(), expected.size());
   for (size_t i = 0; i < expected.size(); ++i) {
     bool found = false;
     for (const std::string& w : im.scene.warnings) found = found || w.find(expected[i]) != w.npos;
     EXPECT_TRUE(found) << expected[i];
   }
+}
+
+// BLEND: Mitsuba's mask with alpha as its opacity (an opaque alpha of 1 needs none), warned as
+// an approximation; --strict-gltf refuses it, as every field that does not map exactly, but not
+// what has no effect on the rendered quantity (minFilter, occlusionTexture).
+TEST(GltfImport, BlendIsAMaskAndStrictGltfRefusesApproximations) {
+  json g = triangle_gltf();
+  g["materials"][0]["alphaMode"] = "BLEND";
+  g["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.5, 0.25, 0.125, 0.375};
+  Imported im = import(g);
+  const Node& mask = one(*im.scene.parsed.root, "bsdf", "mask");
+  EXPECT_EQ(prop(mask, "opacity").number, 0.375);
+  one(mask, "bsdf", "principled");
+  ASSERT_EQ(im.scene.warnings.size(), 1u);
+  EXPECT_NE(
+      im.scene.warnings[0].find("materials[0].alphaMode: approximate: BLEND as Mitsuba's mask"),
+      std::string::npos);
+
+  LoadOptions strict;
+  strict.strict_gltf = true;
+  try {
+    import(g, strict);
+    ADD_FAILURE() << "BLEND accepted with --strict-gltf";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials[0].alphaMode: approximate: BLEND"),
+              std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("(refused: --strict-gltf)"), std::string::npos);
+  }
+  json exact = triangle_gltf();
+  exact["samplers"] = {{{"minFilter", 9987}}};
+  exact["materials"][0]["occlusionTexture"] = {{"index", 0}};
+  exact["images"] = {{{"uri", "none.png"}}};
+  exact["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  EXPECT_EQ(import(exact, strict).scene.warnings.size(), 2u);
 }
 
 // --camera auto (the default without a camera node): yfov 45 degrees down -z at the centre c of
