@@ -13,6 +13,7 @@
 #include "scenes/spectrum.h"
 #include "scenes/values.h"
 #include "scenes/xml_upgrade.h"
+#include "scenes/xml_upgrade_beyond.h"
 
 namespace tr {
 
@@ -112,6 +113,9 @@ class Parser {
     parse_file(path, path, *root, 0, true);
     resolve_references();
     for (Node* node : upgraded_) upgrade_from_v1(*node);
+    // What Mitsuba 3.8 refuses in those files but keeps Mitsuba 0.6's radiance (beyond 3.8).
+    for (std::string& w : upgrade_beyond_mitsuba_3_8(upgraded_, *root))
+      warnings_.push_back(std::move(w));
     check_cycles(*root);
     // As Mitsuba: a -D value that no $name uses is an error (probably a typo).
     for (const auto& [name, value] : defines_)
@@ -517,7 +521,7 @@ class Parser {
         if (glm::length(axis) == 0.0) fail(loc, "<rotate>: the axis is zero");
         double angle = parse_double(required_attr(op, "angle", src), loc, "<rotate> angle");
         t = rotation(axis, angle);
-      } else if (tag == "lookat") {
+      } else if (is_lookat_operation(tag, src.below_2_0)) {  // <lookAt> below 2.0.0
         check_attributes(op, src, {"origin", "target", "up"});
         glm::dvec3 origin = parse_vec3_attr(op, "origin", src);
         glm::dvec3 target = parse_vec3_attr(op, "target", src);

@@ -380,29 +380,228 @@ TEST(XmlUpgrade, BitterliStyleScene) {
   EXPECT_EQ(old_scene.buffers.globals.camera.width, 32u);
 }
 
-// What Bitterli's 0.6 scenes use that Mitsuba 3 does not read even after the upgrade: ldrfilm
-// (no such plugin in Mitsuba 3, which refuses it), the <lookAt> spelling (Mitsuba 3.8's parser
-// refuses it; Mitsuba 3.0-3.6 renamed it <lookat>), and parameters that no Mitsuba 3 plugin
-// reads, e.g. path's strictNormals (Mitsuba warns; twinray refuses unread parameters).
-TEST(XmlUpgrade, WhatMitsuba3DoesNotReadStaysRefused) {
+// Beyond Mitsuba 3.8 (scenes/xml_upgrade_beyond.h): what Bitterli's 0.6 scenes use and Mitsuba
+// 3.8 refuses, read by twinray in files below 2.0.0 only. A 0.6.0 scene with an ldrfilm, <lookAt>,
+// strictNormals on flat-shaded shapes and a roughconductor's extEta loads into its 3.0.0 form.
+TEST(XmlUpgradeBeyond, LdrfilmLookAtScene) {
+  std::filesystem::path dir = std::filesystem::path(SOURCE) / "tests" / "scenes" / "mitsuba_0_6";
+  std::string path = (dir / "ldrfilm_lookat.xml").string();
+  EXPECT_EQ(digest_of(path), digest_of((dir / "ldrfilm_lookat_3.0.0.xml").string()));
+  std::vector<std::string> warnings = parse_scene_xml(path, {}).warnings;
+  ASSERT_EQ(warnings.size(), 2u);  // the upgrade's and one naming what was not applied
+  EXPECT_EQ(warnings[1], path +
+                             ":11: beyond Mitsuba 3.8's upgrade of this 0.x file: strictNormals "
+                             "true not applied: every shape's shading normal is its geometric "
+                             "normal, so it changes only paths of measure zero (line 11); <film "
+                             "type=\"ldrfilm\"> read as an hdrfilm; not applied (they shape only "
+                             "the image file; twinray writes linear EXR and an sRGB PNG preview): "
+                             "file_format \"png\", pixel_format \"rgb\", tonemap_method \"gamma\", "
+                             "gamma 2.2, exposure 0 (line 24)");
+}
+
+// The sensor of scene_text with `film` (its contents) in place of its film.
+std::string film_scene(const std::string& version, const std::string& film,
+                       const std::string& integrator = "") {
+  return "<scene version=\"" + version + "\">\n" + integrator + "<sensor type=\"perspective\">\n" +
+         film + "\n</sensor>\n<shape type=\"sphere\"/>\n</scene>\n";
+}
+
+TEST(XmlUpgradeBeyond, LdrfilmIsAnHdrfilmWhoseOutputOnlyParametersAreDropped) {
   std::filesystem::path dir = fresh_dir();
-  std::string path =
-      write_file(dir, "ldrfilm.xml",
-                 "<scene version=\"0.6.0\"><sensor type=\"perspective\">\n<film type=\"ldrfilm\"/>"
-                 "</sensor></scene>");
-  EXPECT_EQ(error_of(path),
-            ":2: <film type=\"ldrfilm\">: not supported by twinray: ldrfilm (Mitsuba 3 has no such "
+  const std::string size =
+      "<integer name=\"width\" value=\"8\"/><integer name=\"height\" value=\"6\"/>"
+      "<integer name=\"cropOffsetX\" value=\"1\"/><integer name=\"cropWidth\" value=\"4\"/>"
+      "<rfilter type=\"box\"/>";
+  std::string old_path = write_file(
+      dir, "ldr.xml",
+      film_scene("0.5.0",
+                 "<film type=\"ldrfilm\">" + size +
+                     "<string name=\"fileFormat\" value=\"jpeg\"/>"
+                     "<string name=\"pixelFormat\" value=\"luminanceAlpha\"/>"
+                     "<string name=\"tonemapMethod\" value=\"reinhard\"/>"
+                     "<float name=\"key\" value=\"0.3\"/><float name=\"burn\" value=\"1\"/>"
+                     "<boolean name=\"banner\" value=\"true\"/></film>"));
+  std::string new_path = write_file(
+      dir, "hdr.xml",
+      film_scene("3.0.0",
+                 "<film type=\"hdrfilm\"><integer name=\"width\" value=\"8\"/><integer "
+                 "name=\"height\" value=\"6\"/><integer name=\"crop_offset_x\" value=\"1\"/>"
+                 "<integer name=\"crop_width\" value=\"4\"/><rfilter type=\"box\"/></film>"));
+  EXPECT_EQ(digest_of(old_path), digest_of(new_path));
+  Scene scene = load_scene(old_path, {});
+  EXPECT_EQ(scene.buffers.globals.camera.width, 4u);
+  std::vector<std::string> warnings = parse_scene_xml(old_path, {}).warnings;
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[1].find(":3: beyond Mitsuba 3.8's upgrade of this 0.x file: <film "
+                             "type=\"ldrfilm\"> read as an hdrfilm; not applied"),
+            std::string::npos)
+      << warnings[1];
+  EXPECT_NE(warnings[1].find("file_format \"jpeg\", pixel_format \"luminanceAlpha\", "
+                             "tonemap_method \"reinhard\", key 0.3, burn 1, banner true (line 3)"),
+            std::string::npos)
+      << warnings[1];
+  // From 2.0.0 on, as in Mitsuba 3.8, there is no ldrfilm.
+  std::string v2 = write_file(dir, "v2.xml", film_scene("2.0.0", "\n<film type=\"ldrfilm\"/>"));
+  EXPECT_EQ(error_of(v2),
+            ":4: <film type=\"ldrfilm\">: not supported by twinray: ldrfilm (Mitsuba 3 has no such "
             "plugin)");
-  path = write_file(dir, "look_at.xml",
-                    "<scene version=\"0.6.0\"><sensor type=\"perspective\">\n"
-                    "<transform name=\"toWorld\"><lookAt origin=\"0 0 1\" target=\"0 0 0\"/>"
-                    "</transform></sensor></scene>");
-  EXPECT_NE(error_of(path).find("unknown transform operation <lookAt>"), std::string::npos);
-  path = write_file(dir, "strict_normals.xml",
-                    scene_text("0.6.0",
-                               "<integrator type=\"path\">\n"
-                               "<boolean name=\"strictNormals\" value=\"true\"/></integrator>"));
-  EXPECT_NE(error_of(path).find("unused parameter 'strict_normals'"), std::string::npos);
+}
+
+TEST(XmlUpgradeBeyond, HdrfilmOutputValuesTwinrayCannotWriteAreDropped) {
+  std::filesystem::path dir = fresh_dir();
+  std::string old_path = write_file(
+      dir, "old.xml",
+      film_scene("0.6.0",
+                 "<film type=\"hdrfilm\"><string name=\"fileFormat\" value=\"rgbe\"/>"
+                 "<string name=\"pixelFormat\" value=\"rgba\"/><string name=\"componentFormat\" "
+                 "value=\"uint32\"/><boolean name=\"attachLog\" value=\"false\"/></film>"));
+  std::string new_path =
+      write_file(dir, "new.xml", film_scene("3.0.0", "<film type=\"hdrfilm\"/>"));
+  EXPECT_EQ(digest_of(old_path), digest_of(new_path));
+  std::vector<std::string> warnings = parse_scene_xml(old_path, {}).warnings;
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[1].find("file_format \"rgbe\", pixel_format \"rgba\", component_format "
+                             "\"uint32\", attach_log false (line 3)"),
+            std::string::npos)
+      << warnings[1];
+  // What twinray writes stays read, and gets no warning.
+  std::string exr =
+      write_file(dir, "exr.xml",
+                 film_scene("0.6.0",
+                            "<film type=\"hdrfilm\"><string name=\"fileFormat\" value=\"openexr\"/>"
+                            "<string name=\"pixelFormat\" value=\"rgb\"/><string "
+                            "name=\"componentFormat\" value=\"float32\"/></film>"));
+  EXPECT_EQ(parse_scene_xml(exr, {}).warnings.size(), 1u);
+  EXPECT_FALSE(load_scene(exr, {}).film_half);
+  // 2.0.0: Mitsuba 3's hdrfilm, which twinray cannot write as rgbe.
+  std::string v2 =
+      write_file(dir, "v2.xml",
+                 film_scene("2.0.0",
+                            "<film type=\"hdrfilm\"><string name=\"file_format\" value=\"rgbe\"/>"
+                            "</film>"));
+  EXPECT_NE(error_of(v2).find("file_format \"rgbe\" is not supported"), std::string::npos);
+}
+
+TEST(XmlUpgradeBeyond, HighQualityEdgesIsSampleBorder) {
+  std::filesystem::path dir = fresh_dir();
+  std::string old_path =
+      write_file(dir, "old.xml",
+                 film_scene("0.6.0",
+                            "<film type=\"hdrfilm\"><boolean name=\"highQualityEdges\" "
+                            "value=\"true\"/></film>"));
+  std::string new_path = write_file(
+      dir, "new.xml",
+      film_scene("3.0.0",
+                 "<film type=\"hdrfilm\"><boolean name=\"sample_border\" value=\"true\"/></film>"));
+  std::string plain = write_file(dir, "plain.xml", film_scene("3.0.0", "<film type=\"hdrfilm\"/>"));
+  EXPECT_EQ(digest_of(old_path), digest_of(new_path));
+  EXPECT_NE(digest_of(old_path), digest_of(plain));
+  EXPECT_EQ(parse_scene_xml(old_path, {}).warnings.size(), 1u);  // exact: no warning
+  std::string both =
+      write_file(dir, "both.xml",
+                 film_scene("0.6.0",
+                            "<film type=\"hdrfilm\"><boolean name=\"highQualityEdges\" "
+                            "value=\"true\"/>\n<boolean name=\"sample_border\" value=\"true\"/>"
+                            "</film>"));
+  EXPECT_EQ(error_of(both),
+            ":4: parameter 'sample_border' of <film type=\"hdrfilm\"> is specified twice: "
+            "highQualityEdges (line 3) is Mitsuba 3's sample_border");
+  std::string v2 =
+      write_file(dir, "v2.xml",
+                 film_scene("2.0.0",
+                            "<film type=\"hdrfilm\"><boolean name=\"high_quality_edges\" "
+                            "value=\"true\"/></film>"));
+  EXPECT_NE(error_of(v2).find("unused parameter 'high_quality_edges'"), std::string::npos);
+}
+
+TEST(XmlUpgradeBeyond, LookAtBelow2IsLookat) {
+  const std::string look =
+      "<transform name=\"toWorld\">\n<lookAt origin=\"1, 2, 3\" "
+      "target=\"0, 0, 0\" up=\"0, 1, 0\"/></transform>";
+  std::filesystem::path dir = fresh_dir();
+  std::string old_path = write_file(dir, "old.xml", film_scene("0.6.0", look));
+  std::string new_lookat = look;
+  new_lookat.replace(new_lookat.find("toWorld"), 7, "to_world");
+  new_lookat.replace(new_lookat.find("lookAt"), 6, "lookat");
+  std::string new_path = write_file(dir, "new.xml", film_scene("3.0.0", new_lookat));
+  EXPECT_EQ(digest_of(old_path), digest_of(new_path));
+  EXPECT_EQ(parse_scene_xml(old_path, {}).warnings.size(), 1u);  // exact: no warning
+  std::string v2 = write_file(dir, "v2.xml", film_scene("2.0.0", look));
+  EXPECT_EQ(error_of(v2), ":4: unknown transform operation <lookAt>");
+}
+
+TEST(XmlUpgradeBeyond, StrictNormals) {
+  std::filesystem::path dir = fresh_dir();
+  write_file(dir, "quad.obj", QUAD_OBJ);
+  auto scene = [&](const std::string& name, const std::string& version, const std::string& value,
+                   const std::string& shape) {
+    std::string integrator =
+        value.empty() ? "<integrator type=\"path\"/>\n"
+                      : "<integrator type=\"path\">\n<boolean name=\"strictNormals\" value=\"" +
+                            value + "\"/></integrator>\n";
+    std::string text = film_scene(version, "", integrator);
+    text.replace(text.find("<shape type=\"sphere\"/>"), 22, shape);
+    return write_file(dir, name, text);
+  };
+  const std::string flat =
+      "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/>"
+      "<boolean name=\"faceNormals\" value=\"true\"/></shape><shape "
+      "type=\"rectangle\"/><shape type=\"cube\"/><shape type=\"sphere\"/>";
+  const std::string smooth =
+      "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/>"
+      "</shape>";
+  // false is Mitsuba 3's behaviour: dropped with no warning.
+  std::string off = scene("off.xml", "0.6.0", "false", smooth);
+  EXPECT_EQ(digest_of(off), digest_of(scene("none.xml", "0.6.0", "", smooth)));
+  EXPECT_EQ(parse_scene_xml(off, {}).warnings.size(), 1u);
+  // true with flat-shaded shapes only: a warning that it is not applied.
+  std::string on_flat = scene("on_flat.xml", "0.6.0", "true", flat);
+  EXPECT_EQ(digest_of(on_flat), digest_of(scene("none_flat.xml", "0.6.0", "", flat)));
+  std::vector<std::string> warnings = parse_scene_xml(on_flat, {}).warnings;
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[1], on_flat +
+                             ":3: beyond Mitsuba 3.8's upgrade of this 0.x file: strictNormals "
+                             "true not applied: every shape's shading normal is its geometric "
+                             "normal, so it changes only paths of measure zero (line 3)");
+  // true with interpolated shading normals or a bump map: refused.
+  std::string on_smooth = scene("on_smooth.xml", "0.6.0", "true", flat + "\n" + smooth);
+  EXPECT_EQ(error_of(on_smooth),
+            ":3: strictNormals true is not supported: Mitsuba 0.6 then drops the paths on which a "
+            "shading normal and the geometric normal put a direction on different sides, which "
+            "twinray's integrators do not do, and <shape type=\"obj\"> at " +
+                on_smooth + ":8 has (or may have) interpolated shading normals");
+  std::string bump = scene("bump.xml", "0.6.0", "true",
+                           "<shape type=\"sphere\"><bsdf type=\"bumpmap\"><texture "
+                           "type=\"checkerboard\"/><bsdf type=\"diffuse\"/></bsdf></shape>");
+  EXPECT_NE(
+      error_of(bump).find("<bsdf type=\"bumpmap\"> at " + bump + ":7 perturbs shading normals"),
+      std::string::npos);
+  // 2.0.0: no Mitsuba 3 integrator reads it.
+  std::string v2 = scene("v2.xml", "2.0.0", "false", flat);
+  EXPECT_NE(error_of(v2).find("unused parameter 'strictNormals'"), std::string::npos);
+}
+
+TEST(XmlUpgradeBeyond, ConductorExtEta) {
+  auto conductor = [](const std::string& ext, double eta, double k) {
+    return "<shape type=\"sphere\"><bsdf type=\"roughconductor\">" + ext +
+           "<rgb name=\"eta\" value=\"" + std::to_string(eta) + "\"/><rgb name=\"k\" value=\"" +
+           std::to_string(k) + "\"/></bsdf></shape>";
+  };
+  expect_upgrade(conductor("<float name=\"extEta\" value=\"1\"/>", 0.2, 3.0),
+                 conductor("", 0.2, 3.0), "extEta");
+  expect_upgrade(conductor("<float name=\"extEta\" value=\"2\"/>", 0.5, 3.0),
+                 conductor("", 0.25, 1.5), "extEta");
+  std::filesystem::path dir = fresh_dir();
+  std::string named =
+      write_file(dir, "named.xml",
+                 scene_text("0.6.0",
+                            "<shape type=\"sphere\"><bsdf type=\"conductor\">\n<float "
+                            "name=\"extEta\" value=\"1.5\"/><string name=\"material\" "
+                            "value=\"Au\"/></bsdf></shape>"));
+  EXPECT_EQ(error_of(named),
+            ":6: extEta 1.5 of <bsdf type=\"conductor\"> is not supported: Mitsuba 0.6 divides eta "
+            "and k by it, which twinray does only for a positive extEta with eta and k given as "
+            "numbers or colours");
 }
 
 }  // namespace
