@@ -20,13 +20,13 @@ namespace {
 
 const char* kUsage =
     "usage: twinray <verb> [arguments]\n"
-    "  render SCENE [options]       render a Mitsuba 3 XML or .scn scene (twinray render --help)\n"
+    "  render SCENE [options]       render a Mitsuba 3 XML, .scn or glTF scene (twinray render --help)\n"
     "  devices                      list Vulkan devices and whether the GPU backend can use them\n"
     "  compare A.exr B.exr [opts]   compare two renders (twinray compare --help)\n"
     "  validate SUITE [opts]        render a suite on CPU (and GPU), compare, HTML report\n"
     "  converge SCENE [opts]        error against time for render variants (CSV, plot)\n"
     "  conformance FOLDER [opts]    load and render every scene of a folder, sort the outcomes\n"
-    "  convert SCENE.scn -o OUT.xml write a .scn scene as Mitsuba 3 XML (twinray convert --help)\n"
+    "  convert SCENE -o OUT.xml     write a .scn or glTF scene as Mitsuba 3 XML (twinray convert --help)\n"
     "  check-bsdf FILE.glsl [opts]  chi-square/consistency/extremes suites on a GLSL/HLSL BSDF\n"
     "exit status: 0 ok, 1 check failed, 2 usage error, 3 invalid scene, 4 backend unavailable,\n"
     "             5 output not writable, 6 internal error, 7 render interrupted (outputs hold\n"

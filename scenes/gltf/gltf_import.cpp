@@ -550,15 +550,18 @@ class Importer : JsonNodeBuilder {
     auto key = std::make_pair(i, srgb);
     auto it = images_.find(key);
     if (it != images_.end()) return it->second;
+    // The image reader takes a path: the bytes go through a scratch file, removed once read.
     fs::path file = work_ / ("gltf_image_" + std::to_string(i));
-    if (!fs::exists(file)) {
-      std::string bytes = image_bytes(i);
+    std::string bytes = image_bytes(i);
+    {
       std::ofstream f(file, std::ios::binary);
       f.write(bytes.data(), std::streamsize(bytes.size()));
       if (!f.flush()) fail(Location{path_, 0}, "cannot write ", file.string());
     }
     try {
-      return images_[key] = load_image(file.string(), !srgb);
+      Image decoded = load_image(file.string(), !srgb);
+      fs::remove(file);
+      return images_[key] = std::move(decoded);
     } catch (const std::exception& e) {
       std::string what = e.what();
       size_t cut = what.find(": ");  // "path: what" names the scratch file
@@ -944,10 +947,14 @@ class Importer : JsonNodeBuilder {
     NodePtr film = make("film", "hdrfilm", p);
     add(*film, "width", PropertyKind::Integer, p).integer = width;
     add(*film, "height", PropertyKind::Integer, p).integer = height;
+    out_.parameters.push_back({"width", std::to_string(width), film.get(), "width"});
+    out_.parameters.push_back({"height", std::to_string(height), film.get(), "height"});
     add(*film, "component_format", PropertyKind::String, p).text = "float32";
     add_object(sensor, film, p);
     NodePtr sampler = make("sampler", "independent", p);
-    add(*sampler, "sample_count", PropertyKind::Integer, p).integer = define("spp", kDefaultSpp);
+    long long spp = define("spp", kDefaultSpp);
+    add(*sampler, "sample_count", PropertyKind::Integer, p).integer = spp;
+    out_.parameters.push_back({"spp", std::to_string(spp), sampler.get(), "sample_count"});
     add_object(sensor, sampler, p);
     return double(width) / double(height);
   }
@@ -988,7 +995,9 @@ class Importer : JsonNodeBuilder {
 
   void add_integrator() {
     NodePtr path = make("integrator", "path", "");
-    add(*path, "max_depth", PropertyKind::Integer, "").integer = define("max_depth", -1);
+    long long max_depth = define("max_depth", -1);
+    add(*path, "max_depth", PropertyKind::Integer, "").integer = max_depth;
+    out_.parameters.push_back({"max_depth", std::to_string(max_depth), path.get(), "max_depth"});
     add_object(*root_, path, "");
   }
 

@@ -12,6 +12,7 @@
 
 #include "scenes/load_scene.h"
 #include "scenes/xml_parser.h"
+#include "scenes/xml_writer.h"
 
 namespace tr {
 
@@ -19,6 +20,9 @@ struct GltfScene {
   ParsedScene parsed;
   // One line each, "file:line: field: what": fields not mapped or mapped approximately.
   std::vector<std::string> warnings;
+  // -D width, height, spp and max_depth: the values used and the properties that hold them, for
+  // `twinray convert` to write as <default>s.
+  std::vector<SceneParameter> parameters;
 };
 
 bool is_gltf(const std::string& path);

@@ -11,6 +11,32 @@ trap 'rm -rf "$d"' EXIT
 failures=0 cases=0
 
 # --- inputs ------------------------------------------------------------------------------
+# glTF: a lit triangle seen by a camera, one field replaced by each case (gltf NAME SED_EXPR).
+gltf() {
+  sed "$2" >"$d/$1.gltf" <<'EOF'
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+ "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.3, 0.3, 2]}],
+ "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+ "materials": [{"emissiveFactor": [1, 1, 1]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}
+EOF
+}
+gltf gltf_ok 's/x/x/'
+gltf gltf_count_beyond_view 's/"count": 3/"count": 4/'
+gltf gltf_view_beyond_buffer 's/"buffer": 0, "byteLength": 36/"buffer": 0, "byteLength": 360/'
+gltf gltf_bad_index 's/"POSITION": 0/"POSITION": 7/'
+gltf gltf_bad_component 's/5126/5124/'
+gltf gltf_bad_base64 's/AAAAAAAAAAAA/AA!AAAAAAAAA/'
+gltf gltf_missing_bin 's|"uri": "data:[^"]*"|"uri": "missing.bin"|'
+gltf gltf_required_extension 's/"asset"/"extensionsRequired": ["KHR_draco_mesh_compression"], "asset"/'
+gltf gltf_negative_ior 's/"materials": \[{/"materials": [{"extensions": {"KHR_materials_ior": {"ior": 0.5}}, /'
+gltf gltf_blend 's/"materials": \[{/"materials": [{"alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 0.5]}, /'
+gltf gltf_no_camera 's/"nodes": \[0, 1\]/"nodes": [0]/'
+{ printf 'glTF\002\000\000\000\100\000\000\000'; head -c 40 /dev/zero; } >"$d/gltf_bad_length.glb"
+
 scene() {  # scene NAME BODY: a scene file d/NAME.xml with a working sensor around BODY
   cat >"$d/$1.xml" <<EOF
 <scene version="3.0.0">
@@ -233,6 +259,34 @@ check define_without_value 2 'NAME=VALUE' -- $(r ok) -D spp
 check unknown_backend 2 'backend' -- $(r ok) --backend tpu
 check missing_checkpoint 8 'checkpoint' -- $(r ok) --resume "$d/nowhere.checkpoint"
 check bad_time_budget 2 '--time' -- $(r ok) --time -3
+
+g() { echo render "$d/$1.gltf" -o "$d/out/img.exr"; }
+check gltf_renders 0 'twinray: ' -- $(g gltf_ok) -D width=8 -D height=8 -D spp=2
+check gltf_count_beyond_view 3 'gltf_count_beyond_view\.gltf:[0-9]+: accessors\[0\]: 4 elements of 12 bytes' -- $(g gltf_count_beyond_view)
+check gltf_view_beyond_buffer 3 'gltf_view_beyond_buffer\.gltf:[0-9]+: bufferViews\[0\]: bytes 0\.\.360 lie outside' -- $(g gltf_view_beyond_buffer)
+check gltf_bad_index 3 'gltf_bad_index\.gltf:[0-9]+: .*POSITION: index 7 out of range' -- $(g gltf_bad_index)
+check gltf_bad_component 3 'gltf_bad_component\.gltf:[0-9]+: .*unknown component type 5124' -- $(g gltf_bad_component)
+check gltf_bad_base64 3 'gltf_bad_base64\.gltf:[0-9]+: buffers\[0\]\.uri: invalid base64' -- $(g gltf_bad_base64)
+check gltf_missing_bin 3 'gltf_missing_bin\.gltf:[0-9]+: buffers\[0\]\.uri: file "missing\.bin" not found' -- $(g gltf_missing_bin)
+check gltf_required_extension 3 'gltf_required_extension\.gltf:[0-9]+: .*KHR_draco_mesh_compression' -- $(g gltf_required_extension)
+check gltf_ior_below_one 3 'gltf_negative_ior\.gltf:[0-9]+: .*ior: must be at least 1' -- $(g gltf_negative_ior)
+check gltf_strict_blend 3 'gltf_blend\.gltf:[0-9]+: .*BLEND.*refused: --strict-gltf' -- $(g gltf_blend) --strict-gltf
+check gltf_blend_warned 0 'gltf_blend\.gltf:[0-9]+: .*approximate: BLEND as Mitsuba.s mask' -- $(g gltf_blend) -D width=8 -D height=8 -D spp=2
+check gltf_no_camera_framed 0 'no node of the scene has a camera: rendered through a camera framing' -- $(g gltf_no_camera) -D width=8 -D height=8 -D spp=2
+check gltf_camera_out_of_range 3 'gltf_ok\.gltf:[0-9]+: --camera 3: the file has 1 cameras' -- $(g gltf_ok) --camera 3
+check gltf_camera_not_a_number 2 '--camera expects auto or a camera index' -- $(g gltf_ok) --camera first
+check camera_on_xml 2 '--camera is for glTF scenes' -- $(r ok) --camera 0
+check strict_gltf_on_xml 2 '--strict-gltf is for glTF scenes' -- $(r ok) --strict-gltf
+check glb_bad_length 3 'gltf_bad_length\.glb:0: GLB header length 64 is not the file.s size 52' -- render "$d/gltf_bad_length.glb" -o "$d/out/img.exr"
+check no_emitter_warned 0 'no_emitter\.xml: the scene has no emitter' -- $(r no_emitter)
+check envmap_and_constant 2 '--envmap and --constant together' -- $(r no_emitter) --constant 1 --envmap "$d/ok.xml"
+check envmap_not_a_file 2 '--envmap: .*is not a file' -- $(r no_emitter) --envmap "$d/nowhere.exr"
+check envmap_not_an_image 3 'ok\.xml' -- $(r no_emitter) --envmap "$d/ok.xml"
+check envmap_scale_alone 2 '--envmap-scale needs --envmap' -- $(r no_emitter) --envmap-scale 2
+check constant_negative 2 '--constant: expected V or R,G,B' -- $(r no_emitter) --constant 1,-1,1
+check constant_two_values 2 '--constant: expected V or R,G,B' -- $(r no_emitter) --constant 1,1
+check constant_beside_environment 3 'ok\.xml:[0-9]+: .*has an environment already' -- $(r ok) --constant 1
+check constant_lights_no_emitter 0 'twinray: 8x8' -- $(r no_emitter) --constant 0.5,1,2
 
 echo "$cases cases, $failures failed"
 exit $((failures > 0))
