@@ -509,8 +509,11 @@ class Importer : JsonNodeBuilder {
       add(bitmap, "filter_type", PropertyKind::String, p).text = "nearest";
   }
 
-  // KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv, the extension's matrices
-  // (its README, "Overview"), as the bitmap's to_uv.
+  // KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv as the bitmap's to_uv, with
+  // R = ((cos, sin), (-sin, cos)) in rows: u' = cos u + sin v, v' = -sin u + cos v, a rotation
+  // of the uvs counter-clockwise as the image shows them (v down). The GLSL of the extension's
+  // README, read column-major, rotates the other way; the TextureTransformTest sample's arrows
+  // point at its green markers with this one, as in the Khronos sample viewer.
   void texture_transform(Node& bitmap, const json& t, const std::string& p) {
     known(object(t, p), p, {"offset", "rotation", "scale", "texCoord"});
     if (const json* tc = member(t, "texCoord"); tc && !(tc->is_number_integer() && *tc == 0))
@@ -526,8 +529,8 @@ class Importer : JsonNodeBuilder {
     }
     double r = number_or(t, "rotation", 0.0, p);
     glm::dmat4 m(1.0);
-    m[0][0] = std::cos(r) * scale.x, m[0][1] = std::sin(r) * scale.x;
-    m[1][0] = -std::sin(r) * scale.y, m[1][1] = std::cos(r) * scale.y;
+    m[0][0] = std::cos(r) * scale.x, m[0][1] = -std::sin(r) * scale.x;
+    m[1][0] = std::sin(r) * scale.y, m[1][1] = std::cos(r) * scale.y;
     m[3][0] = offset.x, m[3][1] = offset.y;
     add(bitmap, "to_uv", PropertyKind::Transform, p).matrix = m;
   }

@@ -192,6 +192,56 @@ TEST(GltfImport, MetallicRoughnessChannelsAreSplitAndScaled) {
 
 // Spec "Alpha Coverage": MASK -> twinray's alphatest, opacity = baseColorFactor.a x the base
 // colour texture's alpha, cutoff = alphaCutoff.
+// KHR_texture_transform as the bitmap's to_uv (u' = cos u + sin v, v' = -sin u + cos v, then
+// scale and offset: the direction the TextureTransformTest sample checks), the samplers' wrap and
+// magnification filter as wrap_mode and filter_type, and a 4x1 texture written as 4x2.
+TEST(GltfImport, TextureTransformsAndSamplersMapOntoTheBitmap) {
+  std::filesystem::path dir = fresh_dir();
+  std::string png = (dir / "row.png").string();
+  const unsigned char pixels[] = {0, 64, 128, 255};
+  auto out = OIIO::ImageOutput::create(png);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(4, 1, 1, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+  json g = triangle_gltf();
+  g["images"] = {{{"uri", "row.png"}}};
+  g["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33071}, {"magFilter", 9728}},
+                   {{"wrapS", 33648}, {"wrapT", 10497}}};
+  g["textures"] = {{{"source", 0}, {"sampler", 0}}, {{"source", 0}, {"sampler", 1}}};
+  g["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {
+      {"index", 0},
+      {"extensions",
+       {{"KHR_texture_transform",
+         {{"offset", {0.5, 0.25}}, {"rotation", M_PI / 2}, {"scale", {2.0, 3.0}}}}}}};
+  g["materials"][0]["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 1}};
+  std::filesystem::create_directories(dir / "work");
+  std::string path = write_file(dir, "scene.gltf", g.dump(1));
+  GltfScene s = import_gltf(path, {}, dir / "work");
+  const Node& bsdf = one(*s.parsed.root, "bsdf", "principled");
+  const Node& color = *prop(bsdf, "base_color").object;
+  const glm::dmat4& m = prop(color, "to_uv").matrix;
+  EXPECT_NEAR(m[0][0], 0.0, 1e-12);  // u' = 3 v + 0.5
+  EXPECT_NEAR(m[1][0], 3.0, 1e-12);
+  EXPECT_NEAR(m[3][0], 0.5, 1e-12);
+  EXPECT_NEAR(m[0][1], -2.0, 1e-12);  // v' = -2 u + 0.25
+  EXPECT_NEAR(m[1][1], 0.0, 1e-12);
+  EXPECT_NEAR(m[3][1], 0.25, 1e-12);
+  EXPECT_EQ(prop(color, "wrap_mode").text, "clamp");
+  EXPECT_EQ(prop(color, "filter_type").text, "nearest");
+  const Node& metallic = *prop(bsdf, "metallic").object;
+  EXPECT_EQ(prop(metallic, "wrap_mode").text, "mirror");
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("samplers[1].wrapT: approximate: twinray's bitmaps wrap u and v "
+                               "alike; wrapS (mirror) used for both"),
+            std::string::npos)
+      << s.warnings[0];
+  Image row = load_image(prop(color, "filename").text, true);
+  ASSERT_EQ(row.width, 4);
+  ASSERT_EQ(row.height, 2);
+  for (int x = 0; x < 4; ++x) EXPECT_EQ(row.texels[x], row.texels[4 + x]) << x;
+}
+
 TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
   std::filesystem::path dir = fresh_dir();
   std::string png = (dir / "base.png").string();
