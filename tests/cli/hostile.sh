@@ -77,6 +77,22 @@ lit bad_version '<shape type="sphere"/>'
 sed -i 's/version="3.0.0"/version="banana"/' "$d/bad_version.xml"
 lit old_version '<shape type="sphere"/><integrator type="path"><integer name="maxDepth" value="3"/></integrator>'
 sed -i 's/version="3.0.0"/version="0.6.0"/' "$d/old_version.xml"
+# Bitterli's Mitsuba 0.6 style, read beyond Mitsuba 3.8's upgrade (scenes/xml_upgrade_beyond.h);
+# the same text as version 2.0.0 is refused as Mitsuba 3.8 refuses it.
+cat >"$d/ldrfilm_0_6.xml" <<'EOF'
+<scene version="0.6.0">
+  <integrator type="path"><boolean name="strictNormals" value="true"/></integrator>
+  <sensor type="perspective">
+    <transform name="toWorld"><lookAt origin="0, 0, 4" target="0, 0, 0" up="0, 1, 0"/></transform>
+    <film type="ldrfilm"><integer name="width" value="8"/><integer name="height" value="8"/>
+      <string name="fileFormat" value="png"/><float name="gamma" value="2.2"/></film>
+    <sampler type="independent"><integer name="sampleCount" value="2"/></sampler>
+  </sensor>
+  <emitter type="constant"/>
+  <shape type="sphere"/>
+</scene>
+EOF
+sed 's/version="0.6.0"/version="2.0.0"/' "$d/ldrfilm_0_6.xml" >"$d/ldrfilm_2_0.xml"
 for v in 0.6 0.6.0.0 99999999999999999999.0.0 4.0.0; do
   lit "version_$v" '<shape type="sphere"/>'
   sed -i "s/version=\"3.0.0\"/version=\"$v\"/" "$d/version_$v.xml"
@@ -203,6 +219,8 @@ check unknown_ref 3 'unknown_ref\.xml:[0-9]+: .*nothing' -- $(r unknown_ref)
 check duplicate_id 3 'duplicate_id\.xml:[0-9]+: .*"?a"?' -- $(r duplicate_id)
 check bad_version 3 'bad_version\.xml:[0-9]+: .*version' -- $(r bad_version)
 check mitsuba_0_scene_upgraded 0 'old_version\.xml:[0-9]+: scene version 0\.[0-9.]+ upgraded on load' -- $(r old_version)
+check mitsuba_0_ldrfilm_lookat 0 'ldrfilm_0_6\.xml:[0-9]+: beyond Mitsuba 3\.8.s upgrade.*ldrfilm.*file_format "png", gamma 2\.2' -- $(r ldrfilm_0_6)
+check mitsuba_3_refuses_lookAt 3 'ldrfilm_2_0\.xml:4: unknown transform operation <lookAt>' -- $(r ldrfilm_2_0)
 check two_part_version 3 'version_0\.6\.xml:[0-9]+: .*three period-separated numbers' -- $(r version_0.6)
 check four_part_version 3 'version_0\.6\.0\.0\.xml:[0-9]+: .*three period-separated numbers' -- $(r version_0.6.0.0)
 check huge_version 3 'version_9+\.0\.0\.xml:[0-9]+: .*after Mitsuba 3' -- $(r version_99999999999999999999.0.0)
