@@ -93,7 +93,7 @@ INLINE float pdf_emitter_surface(vec3 ref_p, IN(SurfaceInteraction) si) {
 
 // Radiance an area emitter hit sends back along si.wi.
 INLINE vec3 eval_emitter_surface(IN(SurfaceInteraction) si) {
-  return eval_area_emitter(scene_emitter(si.emitter), si.wi);
+  return eval_area_emitter(scene_emitter(si.emitter), si.wi, si.uv);
 }
 
 // The environment (constant or envmap) seen along direction d; zero without one.

@@ -165,6 +165,31 @@ void SceneBuilder::refuse_mesh_attribute(Node& emitter, const char* name,
          "' cannot be a mesh_attribute texture (it is not evaluated on a mesh)");
 }
 
+// Mitsuba 3.8 `area` with a textured radiance (src/emitters/area.cpp): read at the uv of each
+// point of the shape (core/emitters/area.h). A mesh_attribute texture is refused as Mitsuba
+// refuses it when sampling the light (Texture::sample_position is not implemented for it), and
+// so is negative emission, as for a constant radiance.
+uint SceneBuilder::emitted_texture(Node& emitter, const char* name) {
+  const TexturedValue v = textured(emitter, name, glm::dvec3(1.0), false);
+  const Location& loc = find_property(emitter, name)->loc;
+  const Texture& t = b_.textures[v.texture];
+  if (t.type == TEXTURE_MESH_ATTRIBUTE)
+    fail(loc, describe(emitter), ": '", name,
+         "' cannot be a mesh_attribute texture (Mitsuba 3.8 cannot sample an area light by it)");
+  auto negative = [](const vec4& c) { return !(c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f); };
+  bool refused = false;
+  if (t.type == TEXTURE_CHECKERBOARD) {
+    refused = negative(t.color0) || negative(t.color1);
+  } else {
+    for (size_t i = 0; i < size_t(t.width) * t.height && !refused; ++i)
+      refused = negative(b_.texels[t.texel_offset + i]);
+  }
+  if (refused)
+    fail(loc, describe(emitter), ": a negative or NaN value in the '", name,
+         "' texture is not supported by twinray (Mitsuba accepts negative emission)");
+  return v.texture;
+}
+
 // Mitsuba 3.8 `spot` (src/emitters/spot.cpp), parameter by parameter:
 //   intensity     emitted intensity (W/sr), a colour or spectrum, not a texture; 1
 //   texture       optional spatially varying texture over the cone (a bitmap or checkerboard)

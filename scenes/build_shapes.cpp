@@ -130,15 +130,18 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
       fail(find_property(e, "to_world")->loc, describe(e),
            ": an area emitter takes its shape's transform; to_world is refused (as in Mitsuba)");
     Property* rad = find_property(e, "radiance");
-    if (rad && rad->kind == PropertyKind::Object)
-      fail(rad->loc, describe(e), ": textured radiance is not supported");
-    glm::dvec3 radiance = take_color(e, "radiance", glm::dvec3(1.0));
-    if (glm::any(glm::lessThan(radiance, glm::dvec3(0.0))))
-      fail(rad->loc, describe(e), ": radiance must not be negative");
+    if (rad && rad->kind == PropertyKind::Object) {
+      s.radiance_texture = emitted_texture(e, "radiance");
+      s.radiance = glm::vec3(1.0f);  // the texture holds the radiance
+    } else {
+      glm::dvec3 radiance = take_color(e, "radiance", glm::dvec3(1.0));
+      if (glm::any(glm::lessThan(radiance, glm::dvec3(0.0))))
+        fail(rad->loc, describe(e), ": radiance must not be negative");
+      s.radiance = glm::vec3(radiance);
+    }
     s.sampling_weight = take_sampling_weight(e);
     check_consumed(e);
     s.emitting = true;
-    s.radiance = glm::vec3(radiance);
     s.emitter_loc = e.loc;
   }
 
@@ -215,6 +218,10 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
          "\" (supported: obj, ply, serialized, rectangle, cube, sphere, disk, cylinder, "
          "shapegroup, instance)");
   }
+  if (s.radiance_texture != NO_INDEX && r.type == SHAPE_MESH && !(r.flags & SHAPE_HAS_UVS))
+    fail(find_property(*emitters[0]->object, "radiance")->loc, describe(n),
+         ": a textured radiance needs a mesh with uv coordinates (Mitsuba places the texture "
+         "through them and fails without)");
   if (b_.materials[r.material].flags & MATERIAL_ALPHA_TESTED) {
     // core/alpha_test.h: the any-hit test reads mesh uvs; an emitter's area sampling would
     // also land on the cut-away parts.
@@ -389,7 +396,7 @@ void SceneBuilder::finalize_shapes() {
       e.first_index = r.first_index;
       e.first_vertex = r.first_vertex;
       e.area = r.area;
-      e.texture = NO_INDEX;
+      e.texture = s.radiance_texture;
       e.radiance = vec3(s.radiance);
       e.scale = 1.0f;
       e.alias_offset = NO_INDEX;

@@ -77,10 +77,12 @@ void analytic_box(LightBounds& l, const Shape& s) {
 }
 
 // Area emitters: the shape's box and the cone of its normals as the emitter samples and
-// evaluates them (shading normals where the mesh has them, flip_normals applied).
+// evaluates them (shading normals where the mesh has them, flip_normals applied). A textured
+// radiance counts with its mean over the texture, the mean over the surface where the uvs cover
+// the texture once (phi only weighs the choice: it is positive whenever any texel emits).
 void area_bounds(const SceneBuffers& b, const Emitter& e, LightBounds& l) {
   const Shape& s = b.shapes[e.shape];
-  l.phi = kPi * max_abs(e.radiance) * double(s.area);
+  l.phi = kPi * max_abs(e.radiance) * double(s.area) * texture_mean(b, e.texture);
   l.cos_theta_e = 0.0;
   const double flip = (s.flags & SHAPE_FLIP_NORMALS) != 0u ? -1.0 : 1.0;
   l.lo = glm::dvec3(INFINITY);

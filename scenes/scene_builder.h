@@ -26,6 +26,7 @@ struct PendingShape {
   bool emitting = false;
   bool mitsuba_mesh = false;  // a Mesh in Mitsuba (obj, ply, serialized, rectangle, cube)
   glm::vec3 radiance{0.0f};
+  uint radiance_texture = NO_INDEX;  // a textured radiance (core/emitters/area.h)
   double sampling_weight = 1.0;
   Location emitter_loc;
   std::vector<uint> attribute_slots;  // Texture.attribute_slot of each attribute read
@@ -127,6 +128,9 @@ class SceneBuilder {
   void add_emitter(Node& emitter);
   Emitter build_spot(Node& emitter);
   void refuse_mesh_attribute(Node& emitter, const char* name, const TexturedValue& v) const;
+  // An area emitter's textured `name` (a bitmap or checkerboard of no negative value): its
+  // index in SceneBuffers::textures.
+  uint emitted_texture(Node& emitter, const char* name);
   Emitter build_projector(Node& emitter);
   void finalize_emitters();
   // Mitsuba 3's per-emitter `sampling_weight` (src/render/emitter.cpp): finite, >= 0, default 1.

@@ -1,4 +1,5 @@
-// Mitsuba `area`: uniform radiance L leaving the front side (shading normal side) of a shape.
+// Mitsuba `area`: radiance L leaving the front side (shading normal side) of a shape, a constant
+// or a texture evaluated at the emitting point's uv (Mitsuba's m_radiance->eval(si)).
 //
 // Sampling picks a point on the shape and converts the area density to solid angle,
 // p_w = p_A r^2 / |cos theta_l| (pbrt-v4 §4.2.3, eq. 4.9). Meshes: a triangle with
@@ -6,6 +7,9 @@
 // it (Heitz 2019), so p_A = 1 / total area. Spheres seen from outside: uniform cone of
 // directions subtending the sphere (pbrt-v4 §6.2.4, Sphere::Sample with a reference point).
 // Disks and cylinders: uniform area (their transforms must be similarities).
+// A textured radiance leaves these densities as they are (twinray does not importance-sample
+// the texture as Mitsuba 3 does, README.md, "Where twinray differs"): the sample's point is
+// mapped to its uv as a hit there is, and the texture is read at it.
 #ifndef TWINRAY_CORE_EMITTERS_AREA_H
 #define TWINRAY_CORE_EMITTERS_AREA_H
 
@@ -14,6 +18,10 @@
 #include "core/frame.h"
 #include "core/rng.h"
 #include "core/scene_access.h"
+#include "core/shapes/cylinder.h"
+#include "core/shapes/disk.h"
+#include "core/shapes/sphere.h"
+#include "core/texture.h"
 #include "core/transform.h"
 #include "core/warp.h"
 
@@ -24,6 +32,18 @@ INLINE vec3 sphere_center(IN(Shape) s) {
 }
 INLINE float sphere_radius(IN(Shape) s) {
   return length(vec3(s.to_world[0].x, s.to_world[1].x, s.to_world[2].x));
+}
+
+// Whether the area emitter's radiance is a texture (Emitter.texture); only scenes with textures
+// compile the lookup.
+INLINE bool area_radiance_textured(IN(Emitter) e) {
+  return (TR_HAS_TEXTURE(TEXTURE_BITMAP) || TR_HAS_TEXTURE(TEXTURE_CHECKERBOARD)) &&
+         e.texture != NO_INDEX;
+}
+
+// The radiance the emitter leaves at a point of its surface with this uv.
+INLINE vec3 area_radiance(IN(Emitter) e, vec2 uv) {
+  return area_radiance_textured(e) ? eval_texture(e.texture, uv) : e.radiance;
 }
 
 // sin^2(1.5 degrees): below it, cone quantities use Taylor expansions (pbrt-v4 §6.2.4).
@@ -43,9 +63,11 @@ INLINE bool sphere_cone(IN(Shape) s, vec3 p, OUT(float) one_minus_cos_max) {
 }
 
 // A point on the emitter's mesh, uniform in area, with its normal (shading normals interpolated
-// where present, as Mitsuba's Mesh::sample_position). Reads the emitter's copies of its shape's
-// fields only.
-INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
+// where present, as Mitsuba's Mesh::sample_position) and, for a textured radiance, its uv (the
+// vertex uvs interpolated, as at a hit; the loader refuses such a mesh without uvs). Reads the
+// emitter's copies of its shape's fields only.
+INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n,
+                             OUT(vec2) uv) {
   // As Mitsuba 3's Mesh::sample_position, one 2D number picks the triangle (its x) and,
   // rescaled, places the point in it: the point set a correlated sampler stratifies in 2D
   // stays stratified over the whole shape, not over each triangle apart. Meshes of more
@@ -54,6 +76,7 @@ INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec
   bool has_normals = (e.shape_flags & SHAPE_HAS_NORMALS) != 0u;
   vec3 p0, p1, p2;
   vec3 n0 = vec3(0.0f), n1 = vec3(0.0f), n2 = vec3(0.0f);
+  uint base = e.first_index;  // the triangle's first entry in the index buffer
   if (e.alias_count == 1u) {
     // A mesh of one triangle carries it in its record (Emitter.to_world, to_local): with many
     // such emitters, the table entry, indices, vertices and normals would each be a dependent
@@ -75,7 +98,7 @@ INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec
       tri = alias_sample(e.alias_offset, e.alias_count, u, pmf);
       u = rng_next_2d(rng);
     }
-    uint base = e.first_index + 3u * tri;
+    base += 3u * tri;
     uint i0 = e.first_vertex + scene_index(base);
     uint i1 = e.first_vertex + scene_index(base + 1u);
     uint i2 = e.first_vertex + scene_index(base + 2u);
@@ -95,10 +118,19 @@ INLINE void sample_mesh_area(IN(Emitter) e, INOUT(Rng) rng, OUT(vec3) p, OUT(vec
     n = normalize(b0 * n0 + b.x * n1 + b.y * n2);
   else
     n = normalize(cross(p1 - p0, p2 - p0));
+  uv = vec2(0.0f);
+  if (area_radiance_textured(e)) {
+    vec2 uv0 = scene_uv(e.first_vertex + scene_index(base));
+    vec2 uv1 = scene_uv(e.first_vertex + scene_index(base + 1u));
+    vec2 uv2 = scene_uv(e.first_vertex + scene_index(base + 2u));
+    uv = b0 * uv0 + b.x * uv1 + b.y * uv2;
+  }
 }
 
-// A point on an analytic shape (sphere, disk, cylinder), uniform in area, with its normal.
-INLINE void sample_analytic_area(IN(Shape) s, INOUT(Rng) rng, OUT(vec3) p, OUT(vec3) n) {
+// A point on an analytic shape (sphere, disk, cylinder), uniform in area, with its normal and,
+// when `textured`, its uv (Mitsuba's parameterization of the shape, as at a hit).
+INLINE void sample_analytic_area(IN(Shape) s, bool textured, INOUT(Rng) rng, OUT(vec3) p,
+                                 OUT(vec3) n, OUT(vec2) uv) {
   vec2 u = rng_next_2d(rng);
   vec3 local;
   vec3 n_local;
@@ -116,10 +148,21 @@ INLINE void sample_analytic_area(IN(Shape) s, INOUT(Rng) rng, OUT(vec3) p, OUT(v
   }
   p = transform_point(s.to_world[0], s.to_world[1], s.to_world[2], local);
   n = normalize(transform_normal(s.to_object[0], s.to_object[1], s.to_object[2], n_local));
+  uv = vec2(0.0f);
+  if (textured) {
+    if (s.type == SHAPE_SPHERE)
+      uv = unit_sphere_uv(local);
+    else if (s.type == SHAPE_DISK)
+      uv = unit_disk_uv(local);
+    else
+      uv = unit_cylinder_uv(local);
+  }
 }
 
 INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) rng) {
   EmitterSample s = emitter_sample_failed();
+  bool textured = area_radiance_textured(e);
+  vec2 uv = vec2(0.0f);
   float one_minus_cos_max;
   if (TR_HAS_SHAPE(SHAPE_SPHERE) && e.shape_type == SHAPE_SPHERE &&
       sphere_cone(scene_shape(e.shape), ref_p, one_minus_cos_max)) {
@@ -149,13 +192,16 @@ INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) r
     s.dist = length(v);
     s.d = v / s.dist;
     s.pdf = 1.0f / (2.0f * PI * one_minus_cos_max);
+    if (textured)  // the point in the unit sphere's space, as a hit reprojects it
+      uv = unit_sphere_uv(normalize(
+          transform_point(shape.to_object[0], shape.to_object[1], shape.to_object[2], s.p)));
   } else {
     vec3 p;
     vec3 n;
     if (TR_HAS_SHAPE(SHAPE_MESH) && e.shape_type == SHAPE_MESH)
-      sample_mesh_area(e, rng, p, n);
+      sample_mesh_area(e, rng, p, n, uv);
     else
-      sample_analytic_area(scene_shape(e.shape), rng, p, n);
+      sample_analytic_area(scene_shape(e.shape), textured, rng, p, n, uv);
     vec3 v = p - ref_p;
     float dist2 = dot(v, v);
     if (!(dist2 > 0.0f)) return s;
@@ -175,7 +221,7 @@ INLINE EmitterSample sample_area_emitter(IN(Emitter) e, vec3 ref_p, INOUT(Rng) r
     s.pdf = 0.0f;
     return s;
   }
-  s.weight = e.radiance / s.pdf;
+  s.weight = area_radiance(e, uv) / s.pdf;
   return s;
 }
 
@@ -193,9 +239,10 @@ INLINE float pdf_area_emitter(IN(Emitter) e, vec3 ref_p, vec3 p, vec3 n) {
   return dist2 / (cos_l * e.area);
 }
 
-// Radiance leaving the emitter towards wi (local shading frame of the emitter's surface).
-INLINE vec3 eval_area_emitter(IN(Emitter) e, vec3 wi_local) {
-  return wi_local.z > 0.0f ? e.radiance : vec3(0.0f);
+// Radiance leaving the emitter's point of this uv towards wi (local shading frame of the
+// emitter's surface).
+INLINE vec3 eval_area_emitter(IN(Emitter) e, vec3 wi_local, vec2 uv) {
+  return wi_local.z > 0.0f ? area_radiance(e, uv) : vec3(0.0f);
 }
 
 TR_NAMESPACE_END

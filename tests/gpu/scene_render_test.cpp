@@ -9,6 +9,7 @@
 #include "../cpu/alpha_test_check.h"
 #include "../cpu/ambient_occlusion_check.h"
 #include "../cpu/constant_image_check.h"
+#include "../cpu/textured_emitter_check.h"
 #include "cpu_backend/render_cpu.h"
 #include "gpu_backend/render_gpu.h"
 #include "scenes/load_scene.h"
@@ -16,8 +17,8 @@
 namespace tr {
 namespace {
 
-Scene load(const std::string& path, uint emitter_selection = EMITTER_SELECTION_UNIFORM) {
-  LoadOptions options;
+Scene load(const std::string& path, uint emitter_selection = EMITTER_SELECTION_UNIFORM,
+           LoadOptions options = {}) {
   options.emitter_selection = emitter_selection;
   return load_scene(path, options);
 }
@@ -31,8 +32,9 @@ std::string cpu_test_scene(const std::string& name) {
 }
 
 void expect_lockstep(const std::string& path, uint32_t spp, uint32_t seed,
-                     uint emitter_selection = EMITTER_SELECTION_UNIFORM) {
-  Scene scene = load(path, emitter_selection);
+                     uint emitter_selection = EMITTER_SELECTION_UNIFORM,
+                     const LoadOptions& load_options = {}) {
+  Scene scene = load(path, emitter_selection, load_options);
   RenderOptions options;
   options.spp = spp;
   options.seed = seed;
@@ -114,6 +116,21 @@ TEST(GpuLockstep, ManyEmittersByPower) {
 
 TEST(GpuLockstep, AmbientOcclusionPlanes) {
   expect_lockstep(cpu_test_scene("ambient_occlusion_planes.xml"), 16, 1);
+}
+
+// An area emitter of textured radiance (core/emitters/area.h): its light samples and the
+// floor's BSDF samples that hit it, in the shaders as on the CPU.
+TEST(GpuLockstep, TexturedEmitterFloor) {
+  expect_lockstep(cpu_test_scene("textured_emitter_floor.xml"), 16, 1, EMITTER_SELECTION_UNIFORM,
+                  test::floor_scene_options());
+}
+
+// The same emitter seen head-on, against the closed form of tests/cpu/textured_emitter_test.cpp.
+TEST(GpuScenes, TexturedEmitterSeenDirectlyEveryPixelIsItsTexel) {
+  Scene scene = load_scene(cpu_test_scene("textured_emitter_view.xml"), test::view_scene_options());
+  RenderOptions options;
+  options.seed = 2;
+  test::expect_texel_view(render_gpu(scene, options), "gpu");
 }
 
 // twinray's alphatest through the any-hit shader (shaders/alpha.rahit), as

@@ -254,6 +254,30 @@ TEST(SceneErrors, AlphaTestRules) {
                "type=\"mask", "around a mask is not supported");
 }
 
+// An area emitter's textured radiance (scenes/build_emitters.cpp, emitted_texture): uvs to place
+// it on a mesh, a texture Mitsuba can sample, no negative emission.
+TEST(SceneErrors, TexturedEmitterRules) {
+  // Outside the folder error_of empties: an OBJ without vt lines.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "twinray_textured_emitter_rules";
+  std::filesystem::create_directories(dir);
+  const std::string flat = write_file(dir, "flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string checkerboard = "<texture type=\"checkerboard\" name=\"radiance\"/>";
+  expect_error("<shape type=\"obj\"><string name=\"filename\" value=\"" + flat +
+                   "\"/><emitter type=\"area\">\n" + checkerboard + "</emitter></shape>",
+               "checkerboard", "a textured radiance needs a mesh with uv coordinates");
+  expect_error(
+      "<shape type=\"rectangle\"><emitter type=\"area\">\n<texture "
+      "type=\"mesh_attribute\" name=\"radiance\"><string name=\"name\" "
+      "value=\"vertex_color\"/></texture></emitter></shape>",
+      "mesh_attribute", "cannot be a mesh_attribute texture");
+  expect_error(
+      "<shape type=\"sphere\"><emitter type=\"area\">\n<texture type=\"checkerboard\" "
+      "name=\"radiance\"><float name=\"color1\" value=\"-1\"/></texture></emitter>"
+      "</shape>",
+      "color1", "a negative or NaN value in the 'radiance' texture");
+}
+
 TEST(SceneErrors, CorruptedScenesFailCleanly) {
   std::filesystem::path dir = fresh_dir();
   write_file(dir, "quad.obj", QUAD_OBJ);
