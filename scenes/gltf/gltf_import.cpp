@@ -434,7 +434,8 @@ class Importer : JsonNodeBuilder {
 
   struct MaterialNodes {
     NodePtr bsdf;
-    glm::dvec3 emission{0.0};
+    glm::dvec3 emission{0.0};  // emissiveFactor x strength
+    NodePtr emission_texture;  // its product with emissiveTexture, when there is one
     std::string pointer;
   };
 
@@ -445,7 +446,10 @@ class Importer : JsonNodeBuilder {
     add_object(s, m.bsdf, prim_pointer);
     if (m.emission != glm::dvec3(0.0)) {
       NodePtr area = make("emitter", "area", m.pointer);
-      add_color(*area, "radiance", m.emission, m.pointer);
+      if (m.emission_texture)
+        add(*area, "radiance", PropertyKind::Object, m.pointer).object = m.emission_texture;
+      else
+        add_color(*area, "radiance", m.emission, m.pointer);
       add_object(s, area, prim_pointer);
     }
   }
@@ -760,22 +764,11 @@ class Importer : JsonNodeBuilder {
              "to shadow rays; --strict-gltf refuses it)");
     }
     glm::dvec3 emission = rgb(m, "emissiveFactor", glm::dvec3(0.0), p) * strength;
-    if (const json* t = member(m, "emissiveTexture")) {
-      // Constant emission only (scenes/build_shapes.cpp): the factor times the texture's mean.
+    if (const json* t = member(m, "emissiveTexture"); t && emission != glm::dvec3(0.0)) {
+      // The area emitter's radiance: a bitmap of factor x texel (sRGB-decoded), read at each
+      // point's uv (core/emitters/area.h).
       std::string ep = p + "/emissiveTexture";
-      object(*t, ep);
-      map(*t, ep, Bake::Color, glm::dvec3(1.0));  // checks and reports the reference
-      const json& tex = list("textures")[(*t)["index"].get<size_t>()];
-      size_t img = tex["source"].get<size_t>();
-      const Image& im = image(img, true);
-      glm::dvec3 mean(0.0);
-      for (const glm::vec4& c : im.texels) mean += glm::dvec3(c);
-      mean /= double(std::max<size_t>(im.texels.size(), 1));
-      emission *= mean;
-      warn(ep,
-           "approximate: twinray's area lights emit a constant radiance; emissiveFactor times "
-           "the texture's mean (",
-           mean.x, ", ", mean.y, ", ", mean.z, ")");
+      out.emission_texture = map(*t, ep, Bake::Color, emission);
     }
     if (mask && emission != glm::dvec3(0.0))
       bad(p,

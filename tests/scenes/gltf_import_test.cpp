@@ -242,6 +242,39 @@ TEST(GltfImport, TextureTransformsAndSamplersMapOntoTheBitmap) {
   for (int x = 0; x < 4; ++x) EXPECT_EQ(row.texels[x], row.texels[4 + x]) << x;
 }
 
+// emissiveTexture: the area emitter's radiance is a bitmap of emissiveFactor x strength x the
+// sRGB-decoded texel (no emitter where the factor is 0, the spec's default).
+TEST(GltfImport, EmissiveTexturesAreTheEmittersRadiance) {
+  std::filesystem::path dir = fresh_dir();
+  std::string png = (dir / "glow.png").string();
+  const unsigned char pixels[] = {255, 0, 0, 0, 128, 255};
+  auto out = OIIO::ImageOutput::create(png);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+  json g = triangle_gltf();
+  g["images"] = {{{"uri", "glow.png"}}};
+  g["textures"] = {{{"source", 0}}};
+  g["materials"][0]["emissiveTexture"] = {{"index", 0}};
+  std::filesystem::create_directories(dir / "work");
+  std::string path = write_file(dir, "scene.gltf", g.dump(1));
+  GltfScene s = import_gltf(path, {}, dir / "work");
+  const Node& area = one(*s.parsed.root, "emitter", "area");
+  const Property& radiance = prop(area, "radiance");
+  ASSERT_EQ(radiance.kind, PropertyKind::Object);
+  Image texels = load_image(prop(*radiance.object, "filename").text, true);
+  ASSERT_EQ(texels.width, 2);
+  auto srgb = [](double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const glm::dvec3 factor(3.0, 6.0, 12.0);  // emissiveFactor (1, 2, 4) x emissiveStrength 3
+  for (int x = 0; x < 2; ++x)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(texels.texels[x][k], factor[k] * srgb(pixels[3 * x + k] / 255.0), 2e-3) << x << k;
+  EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+}
+
 TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
   std::filesystem::path dir = fresh_dir();
   std::string png = (dir / "base.png").string();
