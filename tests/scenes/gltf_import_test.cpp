@@ -162,6 +162,24 @@ TEST(GltfImport, PunctualLightsKeepTheirUnitsAndDirections) {
   EXPECT_NE(im.scene.warnings[0].find("spot: approximate"), std::string::npos);
 }
 
+// Names carry no meaning (spec "Objects": they need not be unique): two lights and two nodes
+// of one name load as two of each (Assimp's validation refused such files).
+TEST(GltfImport, RepeatedNamesAreNoError) {
+  json g = triangle_gltf();
+  g["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"name", "lamp"}},
+                                                      {{"type", "point"}, {"name", "lamp"}}};
+  for (int i = 0; i < 2; ++i) {
+    g["nodes"].push_back({{"name", "twin"},
+                          {"translation", {double(i), 0.0, 0.0}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", i}}}}}});
+    g["scenes"][0]["nodes"].push_back(3 + i);
+  }
+  g["nodes"][0]["name"] = "twin";
+  Imported im = import(g);
+  EXPECT_EQ(all(*im.scene.parsed.root, "emitter", "point").size(), 2u);
+  EXPECT_TRUE(im.scene.warnings.empty()) << im.scene.warnings.front();
+}
+
 TEST(GltfImport, MetallicRoughnessChannelsAreSplitAndScaled) {
   std::filesystem::path dir = fresh_dir();
   std::string png = (dir / "mr.png").string();
