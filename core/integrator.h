@@ -22,6 +22,11 @@
 // both techniques of a length are kept or dropped together, so their MIS weights still sum to
 // one (Veach 1997 §9.2.2, condition W1) and the estimate is the sum over the lengths in
 // [min_depth, max_depth].
+// Also beyond Mitsuba 3, `strict_normals` (default false) is Mitsuba 0.6's strictNormals of
+// `path` and `direct` (strict_normals_* below): a path ends where the geometric and the shading
+// normal put the incident direction on different sides, and a direction they put on different
+// sides is dropped by both sampling techniques (so their MIS weights still sum to one on the
+// directions kept).
 // `direct` (src/integrators/direct.cpp): at the camera ray's hit, `emitter_samples` emitter
 // samples and `bsdf_samples` BSDF samples combined by the power heuristic with sample counts
 // (Veach 1997 eq. 9.13 with n_i p_i). One call scores what the last ray found and then runs
@@ -104,6 +109,49 @@ INLINE BsdfSurface bsdf_surface(IN(ShadingPoint) sp, IN(Material) m) {
   return g;
 }
 
+// ---- Mitsuba 0.6's strictNormals (Mitsuba 0.6.0, github.com/mitsuba-renderer/mitsuba @ 10af06f,
+// src/integrators/path/path.cpp, MIPathTracer::Li; src/integrators/direct/direct.cpp,
+// MIDirectIntegrator::Li, applies the same three rules to its single vertex):
+//  (a) path.cpp:156-165 (direct.cpp:175-187): at a surface hit, after its emission is added,
+//        if ((rRec.depth >= m_maxDepth && m_maxDepth > 0)
+//            || (m_strictNormals && dot(ray.d, its.geoFrame.n) * Frame::cosTheta(its.wi) >= 0))
+//            break;                               // direct: return Li;
+//      i.e. the path ends unless the geometric and shading normals put the incident direction
+//      strictly on the same side (cosTheta(its.wi) = dot(-ray.d, shading normal)).
+//  (b) path.cpp:186-188 (direct.cpp:232-233): an emitter sample counts only if
+//        !bsdfVal.isZero() && (!m_strictNormals
+//            || dot(its.geoFrame.n, dRec.d) * Frame::cosTheta(bRec.wo) > 0)
+//  (c) path.cpp:215-219 (direct.cpp:267-271): after BSDF sampling (a zero weight has already
+//      ended the path, path.cpp:210-211),
+//        const Vector wo = its.toWorld(bRec.wo);
+//        Float woDotGeoN = dot(its.geoFrame.n, wo);
+//        if (m_strictNormals && woDotGeoN * Frame::cosTheta(bRec.wo) <= 0)
+//            break;                               // direct: continue; (that sample scores 0)
+//      before the ray is traced, so the emission it would find is not counted either.
+// (b) and (c) drop the same directions (> 0 and <= 0 complement each other), so both MIS
+// techniques cover the same domain. Mitsuba 0.6 orients a mesh's geometric normal towards its
+// interpolated shading normal (include/mitsuba/render/skdtree.h:388-392, "Ensure that the
+// geometric & shading normals face the same direction"); twinray's ng follows the winding
+// (and flip_normals), so the rules use it turned the same way. Shapes without shading normals
+// (shading normal = geometric normal) lose only directions exactly in the tangent plane. A
+// bumpmap or normalmap perturbs only inside the BSDF there as here: the rules use the
+// interaction's shading frame.
+INLINE vec3 strict_normals_ng(IN(ShadingPoint) sp) {
+  return dot(sp.ng, sp.frame.n) < 0.0f ? -sp.ng : sp.ng;
+}
+
+// Rule (a): whether the normals put the incident direction `d` (travelling towards sp) on the
+// same side (sp.wi = -d in the shading frame).
+INLINE bool strict_normals_incident_ok(IN(ShadingPoint) sp, vec3 d) {
+  return dot(d, strict_normals_ng(sp)) * sp.wi.z < 0.0f;
+}
+
+// Rules (b) and (c): whether they put the outgoing direction (world `wo_world`, local `wo`) on
+// the same side.
+INLINE bool strict_normals_outgoing_ok(IN(ShadingPoint) sp, vec3 wo_world, vec3 wo) {
+  return dot(strict_normals_ng(sp), wo_world) * wo.z > 0.0f;
+}
+
 // Russian roulette with Mitsuba's survival probability min(max(throughput) eta^2, 0.95);
 // survivors are divided by it (pbrt-v4 §14.1.4).
 INLINE bool russian_roulette_survives(INOUT(PathState) s, IN(Integrator) it) {
@@ -181,6 +229,12 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
     }
   }
   REF(ShadingPoint) sp = s.anchor;
+  // strictNormals rule (a) at the path's new vertex, or at the direct integrator's first hit
+  // (s.ray is still the ray that found it).
+  if (it.strict_normals != 0u && (!direct || first) && !strict_normals_incident_ok(sp, s.ray.d)) {
+    s.alive = 0u;
+    return no_shadow_ray();
+  }
   REF(Material) m = scene_material(sp.material);
   BsdfRoot root = bsdf_root(bsdf_surface(sp, m), m, sp.tex, sp.wi);
   REF(Material) tree = scene_material(root.perturbed != 0u ? normalmap_child(m) : sp.material);
@@ -198,7 +252,9 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
       float mis =
           es.delta != 0u ? 1.0f : power_heuristic(es.pdf * frac_emitter, bsdf.pdf * frac_bsdf);
       sr.contribution = base * bsdf.f * es.weight * (mis / n_emitter);
-      if (any(notEqual(sr.contribution, vec3(0.0f)))) {
+      // strictNormals rule (b).
+      bool kept = it.strict_normals == 0u || strict_normals_outgoing_ok(sp, es.d, wo);
+      if (kept && any(notEqual(sr.contribution, vec3(0.0f)))) {
         sr.enabled = 1u;
         sr.ray = shadow_ray_to(sp.p, sp.ng, es.p, es.n, es.d, es.dist);
       }
@@ -212,7 +268,14 @@ INLINE ShadowRay integrator_step(INOUT(PathState) s, IN(Hit) hit) {
   if (round < uint(n_bsdf)) {
     float u1 = rng_next_1d(s.rng);
     BsdfSample bs = bsdf_root_sample(root, tree, sp.tex, sp.wi, u1, rng_next_2d(s.rng));
-    s.ray = spawn_ray(sp.p, sp.ng, frame_to_world(sp.frame, bs.wo));
+    vec3 wo_world = frame_to_world(sp.frame, bs.wo);
+    // strictNormals rule (c): path ends; direct's sample scores nothing (s.throughput stays 0,
+    // s.ray the empty ray).
+    if (it.strict_normals != 0u && !strict_normals_outgoing_ok(sp, wo_world, bs.wo)) {
+      if (!direct) s.alive = 0u;
+      return sr;
+    }
+    s.ray = spawn_ray(sp.p, sp.ng, wo_world);
     s.throughput = base * bs.weight;
     s.eta *= bs.eta;
     s.prev_bsdf_pdf = bs.pdf;

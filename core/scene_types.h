@@ -276,7 +276,7 @@ struct Integrator {
   uint cos_sample;       // ambientocclusion: 1 cosine-weighted, 0 uniform directions
   uint aov_count;        // Mitsuba `aov`: output variables per sample (core/integrators/aov.h)
   int min_depth;         // path: light of paths shorter than it is not counted (twinray extension)
-  uint pad3;
+  uint strict_normals;   // path, direct: Mitsuba 0.6's strictNormals (core/integrator.h)
   uint pad4;
   uvec4 aov_types[4];  // AOV_* of output variable i at [i / 4][i % 4]
 };

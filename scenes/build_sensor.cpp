@@ -485,6 +485,10 @@ void SceneBuilder::add_integrator(Node& n) {
     fail(m.loc, "unknown integrator type \"", m.type,
          "\" (supported: path, direct, ambientocclusion, moment, aov)");
   }
+  // twinray extension (Mitsuba 3 reads none; Mitsuba 0.6's strictNormals of path and direct,
+  // which a 0.x file's strictNormals becomes): core/integrator.h.
+  if (m.type == "path" || m.type == "direct")
+    it.strict_normals = take_bool(m, "strict_normals", false) ? 1u : 0u;
   // Mitsuba's Integrator base; pbrt-v4's ambientocclusion has no such parameter.
   if (m.type != "ambientocclusion")
     it.hide_emitters = take_bool(m, "hide_emitters", false) ? 1u : 0u;

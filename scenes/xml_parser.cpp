@@ -114,7 +114,7 @@ class Parser {
     resolve_references();
     for (Node* node : upgraded_) upgrade_from_v1(*node);
     // What Mitsuba 3.8 refuses in those files but keeps Mitsuba 0.6's radiance (beyond 3.8).
-    for (std::string& w : upgrade_beyond_mitsuba_3_8(upgraded_, *root))
+    for (std::string& w : upgrade_beyond_mitsuba_3_8(upgraded_))
       warnings_.push_back(std::move(w));
     check_cycles(*root);
     // As Mitsuba: a -D value that no $name uses is an error (probably a typo).

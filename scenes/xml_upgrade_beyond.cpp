@@ -119,41 +119,7 @@ class Upgrade {
     }
     bsdf.props.erase(bsdf.props.begin() + (ext - bsdf.props.data()));
   }
-
-  // Rule 4: strictNormals false dropped; true dropped and returned for the whole-scene check.
-  const Property* integrator(Node& integrator, Property& kept) {
-    Property* p = find_property(integrator, "strict_normals");
-    if (!p) return nullptr;
-    if (p->kind != PropertyKind::Boolean)
-      fail(p->loc, "parameter 'strictNormals' of ", describe(integrator), " must be a boolean");
-    bool strict = p->boolean;
-    kept = *p;
-    integrator.props.erase(integrator.props.begin() + (p - integrator.props.data()));
-    return strict ? &kept : nullptr;
-  }
 };
-
-// The first object of the scene whose shading normals may differ from its geometric normals:
-// a mesh without face_normals = true (Mitsuba 3 interpolates the file's or computed vertex
-// normals), a bumpmap or normalmap, or a shape that twinray does not know to be flat-shaded.
-const Node* shading_normals(const Node& node, std::set<const Node*>& seen) {
-  if (!seen.insert(&node).second) return nullptr;
-  static const std::set<std::string> flat = {"rectangle", "cube",       "sphere",  "disk",
-                                             "cylinder",  "shapegroup", "instance"};
-  static const std::set<std::string> meshes = {"obj", "ply", "serialized"};
-  if (node.tag == "bsdf" && (node.type == "bumpmap" || node.type == "normalmap")) return &node;
-  if (node.tag == "shape" && !flat.count(node.type)) {
-    if (!meshes.count(node.type)) return &node;
-    const Property* fn = nullptr;
-    for (const Property& p : node.props)
-      if (p.name == "face_normals") fn = &p;
-    if (!fn || fn->kind != PropertyKind::Boolean || !fn->boolean) return &node;
-  }
-  for (const Property& p : node.props)
-    if (p.kind == PropertyKind::Object && p.object)
-      if (const Node* n = shading_normals(*p.object, seen)) return n;
-  return nullptr;
-}
 
 }  // namespace
 
@@ -161,34 +127,14 @@ bool is_lookat_operation(const std::string& tag, bool below_2_0) {
   return tag == "lookat" || (below_2_0 && tag == "lookAt");
 }
 
-std::vector<std::string> upgrade_beyond_mitsuba_3_8(const std::vector<Node*>& upgraded,
-                                                    const Node& root) {
+std::vector<std::string> upgrade_beyond_mitsuba_3_8(const std::vector<Node*>& upgraded) {
   Upgrade u;
-  std::vector<Property> strict(upgraded.size());
-  const Property* first_strict = nullptr;
-  for (size_t i = 0; i < upgraded.size(); ++i) {
-    Node& node = *upgraded[i];
+  // Rule 4 needs nothing here: Mitsuba 3.8's upgrade has renamed strictNormals strict_normals.
+  for (Node* n : upgraded) {
+    Node& node = *n;
     if (node.tag == "film") u.film(node);
     if (node.tag == "bsdf" && (node.type == "conductor" || node.type == "roughconductor"))
       Upgrade::conductor(node);
-    if (node.tag == "integrator") {
-      const Property* s = u.integrator(node, strict[i]);
-      if (s && !first_strict) first_strict = s;
-      if (s)
-        u.note(s->loc,
-               "strictNormals true not applied: every shape's shading normal is its "
-               "geometric normal, so it changes only paths of measure zero");
-    }
-  }
-  if (first_strict) {
-    std::set<const Node*> seen;
-    if (const Node* n = shading_normals(root, seen))
-      fail(first_strict->loc,
-           "strictNormals true is not supported: Mitsuba 0.6 then drops the paths on which a "
-           "shading normal and the geometric normal put a direction on different sides, which "
-           "twinray's integrators do not do, and ",
-           describe(*n), " at ", to_string(n->loc),
-           n->tag == "bsdf" ? " perturbs" : " has (or may have) interpolated", " shading normals");
   }
   std::vector<std::string> warnings;
   for (const FileNotes& f : u.files) {

@@ -12,12 +12,11 @@
 //    rgb, componentFormat uint32, attachLog, channelNames): twinray writes linear EXR.
 // 3. A film's highQualityEdges is Mitsuba 3's sample_border (Mitsuba 0.6 src/librender/film.cpp
 //    and renderproc.cpp: the blocks then cover the crop window widened by the filter's border).
-// 4. An integrator's strictNormals (Mitsuba 0.6 src/librender/integrator.cpp, MonteCarloIntegrator;
-//    src/integrators/path/path.cpp) false is Mitsuba 3's behaviour and is dropped. True drops the
-//    paths on which a shading normal and the geometric normal put a direction on different sides:
-//    accepted (not applied) only when every shape's shading normal is its geometric normal (no
-//    mesh without faceNormals, no bumpmap/normalmap), where it changes only paths of measure
-//    zero; otherwise refused.
+// 4. An integrator's strictNormals, which Mitsuba 3.8's upgrade renames strict_normals, is
+//    twinray's strict_normals of path and direct (an extension beyond Mitsuba 3): it drops the
+//    paths and samples that Mitsuba 0.6 drops (src/integrators/path/path.cpp,
+//    src/integrators/direct/direct.cpp; core/integrator.h cites the lines). Exact: nothing to
+//    do here, no warning.
 // 5. A conductor's or roughconductor's float extEta: Mitsuba 0.6 (src/bsdfs/conductor.cpp,
 //    roughconductor.cpp) divides eta and k by it: 1 is dropped; another value divides the eta and
 //    k given as numbers or colours, and is refused otherwise (e.g. beside a material name).
@@ -33,10 +32,9 @@ namespace tr {
 // True when `tag` is the lookat transform operation in a file of that version (rule 1).
 bool is_lookat_operation(const std::string& tag, bool below_2_0);
 
-// Rules 2-5 on `upgraded` (the objects of files below 2.0.0, after upgrade_from_v1); `root` is
-// the whole scene, searched for shading normals when strictNormals is true. Returns one warning
-// per file naming what was not applied ("file:line: ..."); throws SceneError for what is refused.
-std::vector<std::string> upgrade_beyond_mitsuba_3_8(const std::vector<Node*>& upgraded,
-                                                    const Node& root);
+// Rules 2, 3 and 5 on `upgraded` (the objects of files below 2.0.0, after upgrade_from_v1).
+// Returns one warning per file naming what was not applied ("file:line: ..."); throws
+// SceneError for what is refused.
+std::vector<std::string> upgrade_beyond_mitsuba_3_8(const std::vector<Node*>& upgraded);
 
 }  // namespace tr

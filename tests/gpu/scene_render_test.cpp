@@ -104,6 +104,19 @@ TEST(GpuLockstep, PathLengthWindow) {
   expect_lockstep(cpu_test_scene("path_length_window.xml"), 4, 1);
 }
 
+// strict_normals (core/integrator.h, Mitsuba 0.6's strictNormals): tilted shading normals on a
+// square under a constant environment, seen from above (light and BSDF samples dropped, rules b
+// and c) and from below the face (paths ended at their first hit, rule a); both integrators.
+TEST(GpuLockstep, StrictNormals) {
+  for (const char* integrator : {"path", "direct"})
+    for (const char* origin : {"0, 0, 1", "0.98481, 0, -0.17365"}) {
+      LoadOptions load;
+      load.defines = {{"integrator", integrator}, {"origin", origin}, {"spp", "16"}};
+      expect_lockstep(cpu_test_scene("strict_normals_env.xml"), 16, 1, EMITTER_SELECTION_UNIFORM,
+                      load);
+    }
+}
+
 // The opt-in emitter selections (scenes/emitter_selection.h): the light BVH's descent and
 // probabilities, and the power table, in the shaders as on the CPU.
 TEST(GpuLockstep, ManyEmittersByLightBvh) {

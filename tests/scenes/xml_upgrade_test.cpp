@@ -382,7 +382,7 @@ TEST(XmlUpgrade, BitterliStyleScene) {
 
 // Beyond Mitsuba 3.8 (scenes/xml_upgrade_beyond.h): what Bitterli's 0.6 scenes use and Mitsuba
 // 3.8 refuses, read by twinray in files below 2.0.0 only. A 0.6.0 scene with an ldrfilm, <lookAt>,
-// strictNormals on flat-shaded shapes and a roughconductor's extEta loads into its 3.0.0 form.
+// strictNormals and a roughconductor's extEta loads into its 3.0.0 form (with strict_normals).
 TEST(XmlUpgradeBeyond, LdrfilmLookAtScene) {
   std::filesystem::path dir = std::filesystem::path(SOURCE) / "tests" / "scenes" / "mitsuba_0_6";
   std::string path = (dir / "ldrfilm_lookat.xml").string();
@@ -390,9 +390,7 @@ TEST(XmlUpgradeBeyond, LdrfilmLookAtScene) {
   std::vector<std::string> warnings = parse_scene_xml(path, {}).warnings;
   ASSERT_EQ(warnings.size(), 2u);  // the upgrade's and one naming what was not applied
   EXPECT_EQ(warnings[1], path +
-                             ":11: beyond Mitsuba 3.8's upgrade of this 0.x file: strictNormals "
-                             "true not applied: every shape's shading normal is its geometric "
-                             "normal, so it changes only paths of measure zero (line 11); <film "
+                             ":24: beyond Mitsuba 3.8's upgrade of this 0.x file: <film "
                              "type=\"ldrfilm\"> read as an hdrfilm; not applied (they shape only "
                              "the image file; twinray writes linear EXR and an sRGB PNG preview): "
                              "file_format \"png\", pixel_format \"rgb\", tonemap_method \"gamma\", "
@@ -530,55 +528,47 @@ TEST(XmlUpgradeBeyond, LookAtBelow2IsLookat) {
   EXPECT_EQ(error_of(v2), ":4: unknown transform operation <lookAt>");
 }
 
+// strictNormals is twinray's strict_normals of path and direct (Mitsuba 3.8's upgrade renames
+// it), exactly and without a warning, whatever the shapes' shading normals; core/integrator.h
+// applies it (tests/cpu/strict_normals_test.cpp).
 TEST(XmlUpgradeBeyond, StrictNormals) {
   std::filesystem::path dir = fresh_dir();
   write_file(dir, "quad.obj", QUAD_OBJ);
-  auto scene = [&](const std::string& name, const std::string& version, const std::string& value,
-                   const std::string& shape) {
+  auto scene = [&](const std::string& name, const std::string& version, const std::string& type,
+                   const std::string& param, const std::string& value, const std::string& shape) {
     std::string integrator =
-        value.empty() ? "<integrator type=\"path\"/>\n"
-                      : "<integrator type=\"path\">\n<boolean name=\"strictNormals\" value=\"" +
-                            value + "\"/></integrator>\n";
+        value.empty() ? "<integrator type=\"" + type + "\"/>\n"
+                      : "<integrator type=\"" + type + "\">\n<boolean name=\"" + param +
+                            "\" value=\"" + value + "\"/></integrator>\n";
     std::string text = film_scene(version, "", integrator);
     text.replace(text.find("<shape type=\"sphere\"/>"), 22, shape);
     return write_file(dir, name, text);
   };
-  const std::string flat =
-      "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/>"
-      "<boolean name=\"faceNormals\" value=\"true\"/></shape><shape "
-      "type=\"rectangle\"/><shape type=\"cube\"/><shape type=\"sphere\"/>";
   const std::string smooth =
-      "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/>"
-      "</shape>";
-  // false is Mitsuba 3's behaviour: dropped with no warning.
-  std::string off = scene("off.xml", "0.6.0", "false", smooth);
-  EXPECT_EQ(digest_of(off), digest_of(scene("none.xml", "0.6.0", "", smooth)));
-  EXPECT_EQ(parse_scene_xml(off, {}).warnings.size(), 1u);
-  // true with flat-shaded shapes only: a warning that it is not applied.
-  std::string on_flat = scene("on_flat.xml", "0.6.0", "true", flat);
-  EXPECT_EQ(digest_of(on_flat), digest_of(scene("none_flat.xml", "0.6.0", "", flat)));
-  std::vector<std::string> warnings = parse_scene_xml(on_flat, {}).warnings;
-  ASSERT_EQ(warnings.size(), 2u);
-  EXPECT_EQ(warnings[1], on_flat +
-                             ":3: beyond Mitsuba 3.8's upgrade of this 0.x file: strictNormals "
-                             "true not applied: every shape's shading normal is its geometric "
-                             "normal, so it changes only paths of measure zero (line 3)");
-  // true with interpolated shading normals or a bump map: refused.
-  std::string on_smooth = scene("on_smooth.xml", "0.6.0", "true", flat + "\n" + smooth);
-  EXPECT_EQ(error_of(on_smooth),
-            ":3: strictNormals true is not supported: Mitsuba 0.6 then drops the paths on which a "
-            "shading normal and the geometric normal put a direction on different sides, which "
-            "twinray's integrators do not do, and <shape type=\"obj\"> at " +
-                on_smooth + ":8 has (or may have) interpolated shading normals");
-  std::string bump = scene("bump.xml", "0.6.0", "true",
-                           "<shape type=\"sphere\"><bsdf type=\"bumpmap\"><texture "
-                           "type=\"checkerboard\"/><bsdf type=\"diffuse\"/></bsdf></shape>");
-  EXPECT_NE(
-      error_of(bump).find("<bsdf type=\"bumpmap\"> at " + bump + ":7 perturbs shading normals"),
-      std::string::npos);
-  // 2.0.0: no Mitsuba 3 integrator reads it.
-  std::string v2 = scene("v2.xml", "2.0.0", "false", flat);
+      "<shape type=\"obj\"><string name=\"filename\" value=\"quad.obj\"/></shape>"
+      "<shape type=\"sphere\"/>";
+  for (const std::string type : {"path", "direct"}) {
+    // false is the default (Mitsuba 3's behaviour).
+    std::string off = scene(type + "_off.xml", "0.6.0", type, "strictNormals", "false", smooth);
+    EXPECT_EQ(digest_of(off), digest_of(scene(type + "_none.xml", "0.6.0", type, "", "", smooth)));
+    EXPECT_EQ(load_scene(off, {}).buffers.globals.integrator.strict_normals, 0u) << type;
+    // true: strict_normals, on meshes with interpolated normals too; no warning beyond the
+    // upgrade's own.
+    std::string on = scene(type + "_on.xml", "0.6.0", type, "strictNormals", "true", smooth);
+    EXPECT_EQ(parse_scene_xml(on, {}).warnings.size(), 1u) << type;
+    Scene loaded = load_scene(on, {});
+    EXPECT_EQ(loaded.buffers.globals.integrator.strict_normals, 1u) << type;
+    EXPECT_EQ(scene_digest(loaded),
+              digest_of(scene(type + "_3.xml", "3.0.0", type, "strict_normals", "true", smooth)));
+    EXPECT_NE(scene_digest(loaded), digest_of(off));
+  }
+  // 2.0.0: no Mitsuba 3 integrator reads strictNormals; strict_normals is twinray's, for path
+  // and direct only.
+  std::string v2 = scene("v2.xml", "2.0.0", "path", "strictNormals", "false", smooth);
   EXPECT_NE(error_of(v2).find("unused parameter 'strictNormals'"), std::string::npos);
+  std::string ao =
+      scene("ao.xml", "3.0.0", "ambientocclusion", "strict_normals", "true", smooth);
+  EXPECT_NE(error_of(ao).find("unused parameter 'strict_normals'"), std::string::npos);
 }
 
 TEST(XmlUpgradeBeyond, ConductorExtEta) {
