@@ -44,12 +44,7 @@ void add_environment(Node& root, const AddedEnvironment& environment) {
   e->tag = "emitter";
   e->loc = root.loc;
   auto add = [&](const std::string& name, PropertyKind kind) -> Property& {
-    Property p;
-    p.name = name;
-    p.kind = kind;
-    p.loc = root.loc;
-    e->props.push_back(p);
-    return e->props.back();
+    return add_property(*e, name, kind, root.loc);
   };
   if (!environment.envmap.empty()) {
     e->type = "envmap";
@@ -62,12 +57,7 @@ void add_environment(Node& root, const AddedEnvironment& environment) {
     e->type = "constant";
     add("radiance", PropertyKind::Color).vec = *environment.constant;
   }
-  Property p;
-  p.name = "_added_environment";
-  p.kind = PropertyKind::Object;
-  p.loc = root.loc;
-  p.object = e;
-  root.props.push_back(p);
+  add_property(root, "_added_environment", PropertyKind::Object, root.loc).object = e;
 }
 
 }  // namespace tr

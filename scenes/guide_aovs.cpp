@@ -111,26 +111,11 @@ void wrap_in_guide_aovs(Node& root, const std::vector<GuideAov>& aovs) {
   aov->tag = "integrator";
   aov->type = "aov";
   aov->loc = inner->loc;
-  Property p;
-  p.name = "aovs";
-  p.kind = PropertyKind::String;
-  p.loc = inner->loc;
-  p.text = list;
-  aov->props.push_back(p);
+  add_property(*aov, "aovs", PropertyKind::String, inner->loc).text = list;
   // Unnamed, as a nested <integrator> in XML: its colour is the image's R, G, B.
-  Property nested;
-  nested.name = "_arg_0";
-  nested.kind = PropertyKind::Object;
-  nested.loc = inner->loc;
-  nested.object = inner;
-  aov->props.push_back(nested);
+  add_property(*aov, "_arg_0", PropertyKind::Object, inner->loc).object = inner;
   if (slot == root.props.end()) {
-    Property top;
-    top.name = "_guide_aovs";
-    top.kind = PropertyKind::Object;
-    top.loc = root.loc;
-    top.object = aov;
-    root.props.push_back(top);
+    add_property(root, "_guide_aovs", PropertyKind::Object, root.loc).object = aov;
   } else {
     slot->object = aov;
   }

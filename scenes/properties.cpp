@@ -36,6 +36,16 @@ Property* find_property(Node& node, const std::string& name) {
   return nullptr;
 }
 
+Property& add_property(Node& node, const std::string& name, PropertyKind kind,
+                       const Location& loc) {
+  Property p;
+  p.name = name;
+  p.kind = kind;
+  p.loc = loc;
+  node.props.push_back(std::move(p));
+  return node.props.back();
+}
+
 bool has_property(const Node& node, const std::string& name) {
   for (const Property& p : node.props)
     if (p.name == name) return true;

@@ -55,6 +55,8 @@ const char* kind_name(PropertyKind kind);
 std::string describe(const Node& node);  // e.g. <bsdf type="diffuse">
 
 Property* find_property(Node& node, const std::string& name);
+// Appends a property (as a parser would) and returns it for its value to be set.
+Property& add_property(Node& node, const std::string& name, PropertyKind kind, const Location& loc);
 bool has_property(const Node& node, const std::string& name);
 
 // Typed reads; each marks the parameter consumed, fails on a wrong type, and returns the

@@ -71,6 +71,17 @@ json triangle_gltf() {
   return g;
 }
 
+// An 8-bit image of `width` x `height` x `channels` (OpenImageIO picks the format by the name).
+void write_png(const std::filesystem::path& file, int width, int height, int channels,
+               const unsigned char* pixels) {
+  auto out = OIIO::ImageOutput::create(file.string());
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(
+      out->open(file.string(), OIIO::ImageSpec(width, height, channels, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+  out->close();
+}
+
 TEST(GltfImport, TransformsMaterialCameraAndIntegrator) {
   Imported im = import(triangle_gltf());
   const Node& root = *im.scene.parsed.root;
@@ -182,21 +193,14 @@ TEST(GltfImport, RepeatedNamesAreNoError) {
 
 TEST(GltfImport, MetallicRoughnessChannelsAreSplitAndScaled) {
   std::filesystem::path dir = fresh_dir();
-  std::string png = (dir / "mr.png").string();
   // 2x2: B (metallic) and G (roughness) differ per pixel; R is the occlusion channel.
   const unsigned char pixels[] = {10, 51, 204, 20, 102, 153, 30, 153, 102, 40, 204, 51};
-  auto out = OIIO::ImageOutput::create(png);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
-  out->close();
+  write_png(dir / "mr.png", 2, 2, 3, pixels);
   json g = triangle_gltf();
   g["images"] = {{{"uri", "mr.png"}}};
   g["textures"] = {{{"source", 0}}};
   g["materials"][0]["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 0}};
-  std::filesystem::create_directories(dir / "work");
-  std::string path = write_file(dir, "scene.gltf", g.dump(1));
-  GltfScene s = import_gltf(path, {}, dir / "work");
+  GltfScene s = import_in(dir, g).scene;
   const Node& bsdf = one(*s.parsed.root, "bsdf", "principled");
   Image metallic = load_image(prop(*prop(bsdf, "metallic").object, "filename").text, true);
   Image roughness = load_image(prop(*prop(bsdf, "roughness").object, "filename").text, true);
@@ -215,13 +219,8 @@ TEST(GltfImport, MetallicRoughnessChannelsAreSplitAndScaled) {
 // magnification filter as wrap_mode and filter_type, and a 4x1 texture written as 4x2.
 TEST(GltfImport, TextureTransformsAndSamplersMapOntoTheBitmap) {
   std::filesystem::path dir = fresh_dir();
-  std::string png = (dir / "row.png").string();
   const unsigned char pixels[] = {0, 64, 128, 255};
-  auto out = OIIO::ImageOutput::create(png);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(4, 1, 1, OIIO::TypeDesc::UINT8)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
-  out->close();
+  write_png(dir / "row.png", 4, 1, 1, pixels);
   json g = triangle_gltf();
   g["images"] = {{{"uri", "row.png"}}};
   g["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33071}, {"magFilter", 9728}},
@@ -233,9 +232,7 @@ TEST(GltfImport, TextureTransformsAndSamplersMapOntoTheBitmap) {
        {{"KHR_texture_transform",
          {{"offset", {0.5, 0.25}}, {"rotation", M_PI / 2}, {"scale", {2.0, 3.0}}}}}}};
   g["materials"][0]["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 1}};
-  std::filesystem::create_directories(dir / "work");
-  std::string path = write_file(dir, "scene.gltf", g.dump(1));
-  GltfScene s = import_gltf(path, {}, dir / "work");
+  GltfScene s = import_in(dir, g).scene;
   const Node& bsdf = one(*s.parsed.root, "bsdf", "principled");
   const Node& color = *prop(bsdf, "base_color").object;
   const glm::dmat4& m = prop(color, "to_uv").matrix;
@@ -264,20 +261,13 @@ TEST(GltfImport, TextureTransformsAndSamplersMapOntoTheBitmap) {
 // sRGB-decoded texel (no emitter where the factor is 0, the spec's default).
 TEST(GltfImport, EmissiveTexturesAreTheEmittersRadiance) {
   std::filesystem::path dir = fresh_dir();
-  std::string png = (dir / "glow.png").string();
   const unsigned char pixels[] = {255, 0, 0, 0, 128, 255};
-  auto out = OIIO::ImageOutput::create(png);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::UINT8)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
-  out->close();
+  write_png(dir / "glow.png", 2, 1, 3, pixels);
   json g = triangle_gltf();
   g["images"] = {{{"uri", "glow.png"}}};
   g["textures"] = {{{"source", 0}}};
   g["materials"][0]["emissiveTexture"] = {{"index", 0}};
-  std::filesystem::create_directories(dir / "work");
-  std::string path = write_file(dir, "scene.gltf", g.dump(1));
-  GltfScene s = import_gltf(path, {}, dir / "work");
+  GltfScene s = import_in(dir, g).scene;
   const Node& area = one(*s.parsed.root, "emitter", "area");
   const Property& radiance = prop(area, "radiance");
   ASSERT_EQ(radiance.kind, PropertyKind::Object);
@@ -295,13 +285,8 @@ TEST(GltfImport, EmissiveTexturesAreTheEmittersRadiance) {
 
 TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
   std::filesystem::path dir = fresh_dir();
-  std::string png = (dir / "base.png").string();
   const unsigned char pixels[] = {255, 0, 0, 0, 0, 255, 0, 64, 0, 0, 255, 128, 9, 9, 9, 255};
-  auto out = OIIO::ImageOutput::create(png);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 4, OIIO::TypeDesc::UINT8)));
-  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
-  out->close();
+  write_png(dir / "base.png", 2, 2, 4, pixels);
   json g = triangle_gltf();
   g["materials"][0].erase("emissiveFactor");
   g["images"] = {{{"uri", "base.png"}}};
@@ -310,9 +295,7 @@ TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
   g["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
   g["materials"][0]["alphaMode"] = "MASK";
   g["materials"][0]["alphaCutoff"] = 0.3;
-  std::filesystem::create_directories(dir / "work");
-  std::string path = write_file(dir, "scene.gltf", g.dump(1));
-  GltfScene s = import_gltf(path, {}, dir / "work");
+  GltfScene s = import_in(dir, g).scene;
   EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
   const Node& alpha = one(*s.parsed.root, "bsdf", "alphatest");
   EXPECT_DOUBLE_EQ(prop(alpha, "cutoff").number, 0.3);
@@ -320,7 +303,7 @@ TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
   ASSERT_EQ(opacity.width, 2);
   for (int i = 0; i < 4; ++i)
     EXPECT_NEAR(opacity.texels[i].x, 0.5 * pixels[4 * i + 3] / 255.0, 1e-6) << i;
-  Scene scene = load_scene(path, {});
+  Scene scene = load_scene((dir / "scene.gltf").string(), {});
   ASSERT_EQ(scene.buffers.materials.size(), 1u);
   EXPECT_NE(scene.buffers.materials[0].flags & MATERIAL_ALPHA_TESTED, 0u);
   EXPECT_FLOAT_EQ(scene.buffers.materials[0].alpha_cutoff, 0.3f);

@@ -41,11 +41,16 @@ struct Imported {
   std::filesystem::path dir;
 };
 
-inline Imported import(const json& g, const LoadOptions& options = {}) {
-  std::filesystem::path dir = testing_files::fresh_dir();
+// Writes `g` as dir/scene.gltf and imports it (dir: a test's folder, where its images lie).
+inline Imported import_in(const std::filesystem::path& dir, const json& g,
+                          const LoadOptions& options = {}) {
   std::filesystem::create_directories(dir / "work");
   std::string path = testing_files::write_file(dir, "scene.gltf", g.dump(1));
   return {import_gltf(path, options, dir / "work"), dir};
+}
+
+inline Imported import(const json& g, const LoadOptions& options = {}) {
+  return import_in(testing_files::fresh_dir(), g, options);
 }
 
 inline std::vector<const Node*> all(const Node& n, const std::string& tag,
