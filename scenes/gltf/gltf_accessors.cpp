@@ -16,6 +16,8 @@ const int kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 51
           kUnsignedInt = 5125, kFloat = 5126;
 // Spec mesh.primitive.mode.
 const int kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
+// The most values an accessor without a bufferView may hold (1 GiB as doubles).
+const size_t kMaxValues = size_t(1) << 27;
 
 size_t component_size(int type) {
   switch (type) {
@@ -98,17 +100,18 @@ std::vector<double> GltfAccessors::decode(size_t a, const Layout& l) {
   std::string p = "/accessors/" + std::to_string(a);
   const json& o = list(doc_, "accessors")[a];
   const size_t element = component_size(l.component_type) * size_t(l.components);
-  if (l.count > (size_t(1) << 31) / size_t(l.components))
-    throw GltfFieldError(p + "/count", "more elements than twinray reads (2^31 values)");
-  std::vector<double> out(l.count * size_t(l.components), 0.0);  // spec: no bufferView, zeros
-  auto read = [&](std::string_view bytes, size_t offset, size_t stride, size_t count,
-                  const std::string& where, auto&& put) {
-    if (count > 0 && (offset > bytes.size() || (bytes.size() - offset < element) ||
-                      (count - 1) > (bytes.size() - offset - element) / stride))
+  // Elements [0, count) of `element` bytes at `offset` + i `stride` must lie in `bytes`: checked
+  // before anything is allocated for them.
+  auto check_fit = [&](std::string_view bytes, size_t offset, size_t stride, size_t count,
+                       const std::string& where) {
+    if (offset > bytes.size() || bytes.size() - offset < element ||
+        count - 1 > (bytes.size() - offset - element) / stride)
       throw GltfFieldError(where, std::to_string(count) + " elements of " +
                                       std::to_string(element) + " bytes from byte " +
                                       std::to_string(offset) + " do not fit the buffer view (" +
                                       std::to_string(bytes.size()) + " bytes)");
+  };
+  auto read = [&](std::string_view bytes, size_t offset, size_t stride, size_t count, auto&& put) {
     for (size_t i = 0; i < count; ++i)
       for (int c = 0; c < l.components; ++c)
         put(i, c,
@@ -116,15 +119,24 @@ std::vector<double> GltfAccessors::decode(size_t a, const Layout& l) {
                 bytes.data() + offset + i * stride + size_t(c) * component_size(l.component_type),
                 l.component_type, l.normalized));
   };
+  std::string_view bytes;
+  size_t offset = 0, stride = 0;
   if (const json* v = member(o, "bufferView")) {
-    size_t stride = 0;
-    std::string_view bytes =
-        buffers_.view(index(*v, p + "/bufferView", list(doc_, "bufferViews").size()), &stride);
-    read(bytes, size_t(integer(o, "byteOffset", 0, p)), stride ? stride : element, l.count, p,
-         [&](size_t i, int c, double x) { out[i * size_t(l.components) + size_t(c)] = x; });
+    bytes = buffers_.view(index(*v, p + "/bufferView", list(doc_, "bufferViews").size()), &stride);
+    offset = size_t(integer(o, "byteOffset", 0, p));
+    stride = stride ? stride : element;
+    check_fit(bytes, offset, stride, l.count, p);
   } else if (member(o, "byteOffset")) {
     throw GltfFieldError(p + "/byteOffset", "given without a bufferView");
+  } else if (l.count > kMaxValues / size_t(l.components)) {
+    // Without a bufferView the file's size does not bound the count.
+    throw GltfFieldError(p + "/count", "more elements than twinray reads without a bufferView (" +
+                                           std::to_string(kMaxValues) + " values)");
   }
+  std::vector<double> out(l.count * size_t(l.components), 0.0);  // spec: no bufferView, zeros
+  if (member(o, "bufferView"))
+    read(bytes, offset, stride, l.count,
+         [&](size_t i, int c, double x) { out[i * size_t(l.components) + size_t(c)] = x; });
   if (const json* s = member(o, "sparse")) {
     // Spec "Sparse Accessors": `count` elements replaced, at strictly increasing indices.
     std::string sp = p + "/sparse";
@@ -152,7 +164,9 @@ std::vector<double> GltfAccessors::decode(size_t a, const Layout& l) {
                              "indices must increase strictly and stay below the accessor's count");
     }
     std::string_view vb = buffers_.view(reference(doc_, *sv, "bufferView", "bufferViews", vp));
-    read(vb, size_t(integer(*sv, "byteOffset", 0, vp)), element, count, vp,
+    size_t voff = size_t(integer(*sv, "byteOffset", 0, vp));
+    check_fit(vb, voff, element, count, vp);
+    read(vb, voff, element, count,
          [&](size_t i, int c, double x) { out[at[i] * size_t(l.components) + size_t(c)] = x; });
   } else if (!member(o, "bufferView")) {
     throw GltfFieldError(p, "neither \"bufferView\" nor \"sparse\": no data");

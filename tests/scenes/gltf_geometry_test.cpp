@@ -263,6 +263,14 @@ TEST(GltfGeometry, MalformedAccessorsAreOneLineErrors) {
   has(with([](json& g) { g["accessors"][0]["count"] = 2; }),
       "2 vertices do not make whole triangles");
   has(with([](json& g) { g["buffers"][0]["byteLength"] = 100; }), "buffers[0].byteLength: is 100");
+  // Counts far beyond the data are refused before anything is allocated for them.
+  has(with([](json& g) { g["accessors"][0]["count"] = 1LL << 40; }),
+      "accessors[0]: 1099511627776 elements of 12 bytes from byte 0 do not fit");
+  has(with([](json& g) {
+        g["accessors"][0].erase("bufferView");
+        g["accessors"][0]["count"] = 1LL << 30;
+      }),
+      "accessors[0].count: more elements than twinray reads without a bufferView");
 }
 
 }  // namespace
