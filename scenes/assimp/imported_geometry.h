@@ -1,6 +1,6 @@
-// The geometry Assimp reads from a file, in plain arrays: what crosses from the Assimp module
-// (scenes/assimp/assimp_module.cpp, loaded on first use) to the importers that write it as PLY
-// files (scenes/gltf/, scenes/scn/). Faces are triangles (Assimp's aiProcess_Triangulate).
+// An imported mesh in plain arrays: what the Assimp module (scenes/assimp/assimp_module.cpp,
+// loaded on first use) reads from an OBJ file for scenes/scn/, and what scenes/gltf/ reads from
+// a glTF primitive; both write it as a PLY file. Faces are triangles.
 #pragma once
 
 #include <cstdint>
@@ -10,13 +10,13 @@
 namespace tr {
 
 struct ImportedMesh {
-  std::string material;  // the name of Assimp's material for the mesh
+  std::string material;  // the name of Assimp's material for the mesh (Assimp only)
   // Assimp found points or lines in it (aiPrimitiveType_POINT | aiPrimitiveType_LINE): its
-  // faces are then not all triangles, and no importer reads it.
+  // faces are then not all triangles, and no importer reads it (Assimp only).
   bool points_or_lines = false;
   std::vector<float> positions;  // x y z per vertex
   std::vector<float> normals;    // nx ny nz per vertex, or empty
-  std::vector<float> uv;         // Assimp's first texture coordinates, u v per vertex, or empty
+  std::vector<float> uv;         // the first texture coordinates, u v per vertex, or empty
   std::vector<std::uint32_t> triangles;  // three vertex indices per face
 };
 

@@ -7,7 +7,7 @@
 namespace tr {
 
 void write_imported_ply(const ImportedMesh& mesh, const std::filesystem::path& file,
-                        const std::string& comment, TextureV v) {
+                        const std::string& comment) {
   std::ofstream f(file, std::ios::binary);
   const bool normals = !mesh.normals.empty(), uv = !mesh.uv.empty();
   const std::size_t vertices = mesh.positions.size() / 3, faces = mesh.triangles.size() / 3;
@@ -21,9 +21,7 @@ void write_imported_ply(const ImportedMesh& mesh, const std::filesystem::path& f
     for (int c = 0; c < 3; ++c) put(mesh.positions[3 * k + c]);
     if (normals)
       for (int c = 0; c < 3; ++c) put(mesh.normals[3 * k + c]);
-    if (uv)
-      put(mesh.uv[2 * k]),
-          put(v == TextureV::Flipped ? 1.0f - mesh.uv[2 * k + 1] : mesh.uv[2 * k + 1]);
+    if (uv) put(mesh.uv[2 * k]), put(mesh.uv[2 * k + 1]);
   }
   for (std::size_t k = 0; k < faces; ++k) {
     put(std::uint8_t(3));

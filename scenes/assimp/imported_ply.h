@@ -11,10 +11,8 @@
 
 namespace tr {
 
-enum class TextureV { AsRead, Flipped };  // Flipped: v written as 1 - v
-
 // Throws std::runtime_error when the file cannot be written.
 void write_imported_ply(const ImportedMesh& mesh, const std::filesystem::path& file,
-                        const std::string& comment, TextureV v);
+                        const std::string& comment);
 
 }  // namespace tr

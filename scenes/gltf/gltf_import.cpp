@@ -281,8 +281,7 @@ class Importer : JsonNodeBuilder {
           std::swap(mesh.triangles[t + 1], mesh.triangles[t + 2]);
       out.file = (work_ / ("gltf_mesh_" + std::to_string(plys_.size()) + ".ply")).string();
       try {
-        write_imported_ply(mesh, out.file, "written by twinray from a glTF primitive",
-                           TextureV::AsRead);
+        write_imported_ply(mesh, out.file, "written by twinray from a glTF primitive");
       } catch (const std::runtime_error& e) {
         fail(Location{path_, 0}, e.what());
       }

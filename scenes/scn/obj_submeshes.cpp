@@ -35,7 +35,7 @@ std::vector<ObjSubmesh> write_obj_submeshes(const std::string& obj_path,
     s.has_normals = !m.normals.empty();
     s.has_uv = !m.uv.empty();
     // Texture coordinates as in the file: the shape flips v, as Mitsuba's obj plugin does.
-    write_imported_ply(m, s.ply_file, "written by twinray from an OBJ group", TextureV::AsRead);
+    write_imported_ply(m, s.ply_file, "written by twinray from an OBJ group");
     out.push_back(s);
   }
   if (out.empty()) throw std::runtime_error("no faces");
