@@ -871,8 +871,8 @@ class Importer : JsonNodeBuilder {
       node = *it;
     } else {
       for (size_t k = 1; k < camera_nodes_.size(); ++k)
-        warn("/nodes/" + std::to_string(camera_nodes_[k]) + "/camera",
-             "ignored: twinray renders through the first camera node, nodes[", node,
+        note("/nodes/" + std::to_string(camera_nodes_[k]) + "/camera",
+             "not used: twinray renders through the first camera node, nodes[", node,
              "] (--camera N chooses cameras[N])");
     }
     std::string np = "/nodes/" + std::to_string(node);
@@ -924,9 +924,9 @@ class Importer : JsonNodeBuilder {
     add_object(*root_, sensor, p);
   }
 
-  // The image size: -D width and height, the one missing from the other and the camera's aspect
-  // ratio (or Mitsuba's default film's), neither at Mitsuba's default height, the film and the
-  // sampler of `sensor`; returns the image's aspect ratio.
+  // Adds the film and the sampler of `sensor` and returns the image's aspect ratio. The size:
+  // -D width and height; one of them, the other from the aspect ratio (the camera's `aspect`
+  // when positive, else Mitsuba's default film's 4:3); neither, Mitsuba's default height.
   double add_film_and_sampler(Node& sensor, double aspect, const std::string& aspect_pointer,
                               const std::string& p) {
     bool have_w = false, have_h = false;

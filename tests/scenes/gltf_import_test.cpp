@@ -413,7 +413,7 @@ TEST(GltfImport, CameraNChoosesTheFilesNthCamera) {
   EXPECT_NEAR(prop(one(*first.scene.parsed.root, "sensor", "perspective"), "fov").number,
               glm::degrees(0.5), 1e-12);
   ASSERT_EQ(first.scene.warnings.size(), 1u);
-  EXPECT_NE(first.scene.warnings[0].find("nodes[3].camera: ignored: twinray renders through the "
+  EXPECT_NE(first.scene.warnings[0].find("nodes[3].camera: not used: twinray renders through the "
                                          "first camera node, nodes[2] (--camera N chooses"),
             std::string::npos);
   LoadOptions o;
