@@ -50,6 +50,22 @@ INLINE Frame shading_frame(vec3 n, vec3 dp_du) {
   return f;
 }
 
+// The frame of a mesh with vertex tangents (twinray's `vertex_tangents`; glTF 2.0 "Meshes":
+// bitangent = w (normal x tangent)): s is the interpolated tangent made orthogonal to n (Gram-
+// Schmidt), t = +-(n x s) on the side of the interpolated bitangent, so a normal map's green
+// channel follows the bitangent on mirrored uvs too. Where no tangent is left, Mitsuba's frame.
+INLINE Frame tangent_frame(vec3 n, vec3 tangent, vec3 bitangent, vec3 dp_du) {
+  vec3 s = tangent - n * dot(n, tangent);
+  float len2 = dot(s, s);
+  if (!(len2 > 1e-20f)) return shading_frame(n, dp_du);
+  Frame f;
+  f.n = n;
+  f.s = s * inversesqrt(len2);
+  f.t = cross(n, f.s);
+  if (dot(f.t, bitangent) < 0.0f) f.t = -f.t;
+  return f;
+}
+
 // A point, vector or normal of an instance's space in world space; instance 0, the scene's
 // own shapes, is the identity and skips the arithmetic (which could only flip signs of zero).
 INLINE vec3 instance_point(uint index, IN(Instance) inst, vec3 p) {
@@ -81,11 +97,17 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
   si.dp_dv = vec3(0.0f);
   vec3 n_shading;
   vec3 dp_du = vec3(0.0f);
+  bool tangents = false;
+  vec3 tangent = vec3(0.0f);
+  vec3 bitangent = vec3(0.0f);
   if (TR_HAS_SHAPE(SHAPE_MESH) && shape.type == SHAPE_MESH) {
     uint base = shape.first_index + 3u * hit.primitive;
-    uint i0 = shape.first_vertex + scene_index(base);
-    uint i1 = shape.first_vertex + scene_index(base + 1u);
-    uint i2 = shape.first_vertex + scene_index(base + 2u);
+    uint v0 = scene_index(base);
+    uint v1 = scene_index(base + 1u);
+    uint v2 = scene_index(base + 2u);
+    uint i0 = shape.first_vertex + v0;
+    uint i1 = shape.first_vertex + v1;
+    uint i2 = shape.first_vertex + v2;
     vec3 p0 = instance_point(hit.instance, inst, scene_position(i0));
     vec3 p1 = instance_point(hit.instance, inst, scene_position(i1));
     vec3 p2 = instance_point(hit.instance, inst, scene_position(i2));
@@ -100,6 +122,19 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
       vec3 n = b0 * scene_normal(i0) + b1 * scene_normal(i1) + b2 * scene_normal(i2);
       n_shading = normalize(instance_normal(hit.instance, inst, n));
       if ((shape.flags & SHAPE_FLIP_NORMALS) != 0u) n_shading = -n_shading;
+    }
+    tangents = (shape.flags & SHAPE_HAS_TANGENTS) != 0u;
+    if (tangents) {
+      uint t_words = shape.tangent_frames;
+      uint b_words = t_words + 3u * shape.vertex_count;
+      tangent = b0 * mesh_attribute_value(t_words, 3u, v0) +
+                b1 * mesh_attribute_value(t_words, 3u, v1) +
+                b2 * mesh_attribute_value(t_words, 3u, v2);
+      bitangent = b0 * mesh_attribute_value(b_words, 3u, v0) +
+                  b1 * mesh_attribute_value(b_words, 3u, v1) +
+                  b2 * mesh_attribute_value(b_words, 3u, v2);
+      tangent = instance_vector(hit.instance, inst, tangent);
+      bitangent = instance_vector(hit.instance, inst, bitangent);
     }
     si.uv = vec2(b1, b2);
     if (partials) {
@@ -184,7 +219,8 @@ INLINE SurfaceInteraction surface_interaction(IN(Ray) ray, IN(Hit) hit) {
     dp_du = transform_vector(shape.to_world[0], shape.to_world[1], shape.to_world[2], dp_du_local);
     dp_du = instance_vector(hit.instance, inst, dp_du);
   }
-  si.frame = shading_frame(n_shading, dp_du);
+  si.frame = tangents ? tangent_frame(n_shading, tangent, bitangent, dp_du)
+                      : shading_frame(n_shading, dp_du);
   si.wi = frame_to_local(si.frame, -ray.d);
   return si;
 }

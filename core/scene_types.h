@@ -94,6 +94,7 @@ const uint SHAPE_CYLINDER = 3u;  // radius 1, z in [0,1], no caps, through to_wo
 const uint SHAPE_HAS_NORMALS = 1u;   // per-vertex shading normals present
 const uint SHAPE_HAS_UVS = 2u;       // per-vertex uvs present
 const uint SHAPE_FLIP_NORMALS = 4u;  // Mitsuba `flip_normals`
+const uint SHAPE_HAS_TANGENTS = 8u;  // twinray `vertex_tangents`: Shape.tangent_frames is set
 
 struct Shape {
   uint type;            // SHAPE_*
@@ -113,6 +114,11 @@ struct Shape {
                          // NO_INDEX: one primitive (sphere, disk, cylinder)
   uint attribute_table;  // meshes read by mesh_attribute textures: first word of this mesh's
                          // table in the attribute buffer (core/texture.h), else NO_INDEX
+  uint tangent_frames;   // SHAPE_HAS_TANGENTS: first word, in the attribute buffer, of the
+                         // vertex tangents (3 floats a vertex), then the bitangents (same)
+  uint pad1;
+  uint pad2;
+  uint pad3;
 };
 
 // An instance places a range of shapes (a top-level set or a Mitsuba `shapegroup`) in the

@@ -106,6 +106,8 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
   r.first_index = r.triangle_count = r.first_vertex = r.vertex_count = 0u;
   r.scene_index = r.prim_offset = 0u;
   r.attribute_table = NO_INDEX;
+  r.tangent_frames = NO_INDEX;
+  r.pad1 = r.pad2 = r.pad3 = 0u;
   set_transforms(r, glm::dmat4(1.0));
 
   glm::dmat4 to_world = take_transform(n, "to_world");
@@ -159,6 +161,14 @@ void SceneBuilder::add_shape(Node& n, std::vector<PendingShape>& out, bool in_gr
       if (type == "serialized") s.mesh.attributes.clear();
     } else {
       s.mesh = type == "rectangle" ? make_rectangle() : make_cube();
+    }
+    if (type == "ply" && take_bool(n, "vertex_tangents", false)) {
+      try {
+        s.tangent_frames = mesh_tangent_frames(s.mesh, to_world);
+      } catch (const std::runtime_error& e) {
+        fail(find_property(n, "vertex_tangents")->loc, describe(n), ": ", e.what());
+      }
+      r.flags |= SHAPE_HAS_TANGENTS;
     }
     transform_mesh(s.mesh, to_world);
     if (face_normals)
@@ -385,6 +395,10 @@ void SceneBuilder::finalize_shapes() {
           b_.attributes[r.attribute_table + 2 * slot + 1] = uint(a.dim);
           for (float v : a.values) b_.attributes.push_back(glm::floatBitsToUint(v));
         }
+      }
+      if (!s.tangent_frames.empty()) {
+        r.tangent_frames = uint(b_.attributes.size());
+        for (float v : s.tangent_frames) b_.attributes.push_back(glm::floatBitsToUint(v));
       }
     }
     if (s.emitting) {

@@ -266,6 +266,26 @@ void transform_mesh(TriangleMesh& mesh, const glm::dmat4& m) {
   }
 }
 
+std::vector<float> mesh_tangent_frames(const TriangleMesh& mesh, const glm::dmat4& to_world) {
+  const size_t vertices = mesh.positions.size();
+  std::vector<float> frames(6 * vertices);
+  const char* names[2] = {"vertex_tangent", "vertex_bitangent"};
+  for (size_t k = 0; k < 2; ++k) {
+    auto it = mesh.attributes.find(names[k]);
+    if (it == mesh.attributes.end() || it->second.dim != 3 ||
+        it->second.values.size() != 3 * vertices)
+      throw std::runtime_error(std::string("vertex_tangents needs the mesh attribute ") + names[k] +
+                               " with 3 values a vertex (PLY properties " +
+                               (k == 0 ? "tangent" : "bitangent") + "_x, _y, _z)");
+    const std::vector<float>& v = it->second.values;
+    for (size_t i = 0; i < vertices; ++i) {
+      glm::dvec3 w = glm::dmat3(to_world) * glm::dvec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+      for (int c = 0; c < 3; ++c) frames[3 * (k * vertices + i) + c] = float(w[c]);
+    }
+  }
+  return frames;
+}
+
 double triangle_area(const TriangleMesh& mesh, size_t triangle) {
   glm::dvec3 a(mesh.positions[mesh.indices[3 * triangle]]);
   glm::dvec3 b(mesh.positions[mesh.indices[3 * triangle + 1]]);

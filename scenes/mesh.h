@@ -45,6 +45,12 @@ std::vector<glm::vec3> mesh_vertex_normals(const TriangleMesh& mesh);
 // Applies an affine transform: points by M, normals by M^-T (renormalised).
 void transform_mesh(TriangleMesh& mesh, const glm::dmat4& m);
 
+// twinray's `vertex_tangents` (glTF's TANGENT, scenes/gltf/): the mesh attributes
+// vertex_tangent and vertex_bitangent (3 values a vertex each) through to_world's linear part,
+// all tangents then all bitangents (Shape.tangent_frames). Throws std::runtime_error when either
+// is missing, has another size, or is not finite.
+std::vector<float> mesh_tangent_frames(const TriangleMesh& mesh, const glm::dmat4& to_world);
+
 double triangle_area(const TriangleMesh& mesh, size_t triangle);
 
 }  // namespace tr

@@ -30,6 +30,7 @@ struct PendingShape {
   double sampling_weight = 1.0;
   Location emitter_loc;
   std::vector<uint> attribute_slots;  // Texture.attribute_slot of each attribute read
+  std::vector<float> tangent_frames;  // `vertex_tangents`: as Shape.tangent_frames (world space)
 };
 
 struct PendingGroup {

@@ -17,6 +17,10 @@ struct ImportedMesh {
   std::vector<float> positions;  // x y z per vertex
   std::vector<float> normals;    // nx ny nz per vertex, or empty
   std::vector<float> uv;         // the first texture coordinates, u v per vertex, or empty
+  // A normal map's tangent frame, x y z per vertex each, or empty (glTF only: its TANGENT, or
+  // scenes/gltf/gltf_tangents.h).
+  std::vector<float> tangents;
+  std::vector<float> bitangents;
   std::vector<std::uint32_t> triangles;  // three vertex indices per face
 };
 

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "scenes/gltf/gltf_json.h"
+#include "scenes/gltf/gltf_tangents.h"
 
 namespace tr {
 
@@ -217,6 +218,9 @@ ImportedMesh GltfAccessors::primitive(size_t m, size_t k) {
   };
   attribute("NORMAL", 3, mesh.normals);
   attribute("TEXCOORD_0", 2, mesh.uv);
+  std::vector<float> tangent;
+  attribute("TANGENT", 4, tangent);
+  if (!tangent.empty() && !mesh.normals.empty()) set_gltf_tangents(mesh, tangent);
 
   std::vector<std::uint32_t> v;
   if (const json* i = member(prim, "indices")) {

@@ -25,7 +25,8 @@ class GltfAccessors {
   std::vector<std::uint32_t> indices(size_t a);
 
   // meshes[m].primitives[k], whose mode is triangles, strip or fan: its positions, normals and
-  // TEXCOORD_0 (glTF's v, origin at the image's top-left, as read) and its triangles.
+  // TEXCOORD_0 (glTF's v, origin at the image's top-left, as read), its tangent frames from
+  // TANGENT where it has NORMAL too (scenes/gltf/gltf_tangents.h), and its triangles.
   ImportedMesh primitive(size_t m, size_t k);
 
  private:

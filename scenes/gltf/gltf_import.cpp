@@ -18,6 +18,7 @@
 #include "scenes/gltf/gltf_accessors.h"
 #include "scenes/gltf/gltf_buffers.h"
 #include "scenes/gltf/gltf_field_error.h"
+#include "scenes/gltf/gltf_tangents.h"
 #include "scenes/json_node_builder.h"
 
 namespace tr {
@@ -257,19 +258,31 @@ class Importer : JsonNodeBuilder {
   struct PrimitivePly {
     std::string file;
     bool normals = false;
+    bool tangents = false;  // the normal map's tangent frames (scenes/gltf/gltf_tangents.h)
     glm::dvec3 lo{HUGE_VAL}, hi{-HUGE_VAL};
   };
 
-  // meshes[m].primitives[k] as a PLY file, written once for each winding (scenes/assimp/
-  // imported_ply.h). Spec "Meshes": a node whose global transform has a negative determinant
-  // turns its triangles clockwise; written reversed, so that the front faces stay the
-  // counter-clockwise ones after the mirroring transform.
-  const PrimitivePly& ply_file(size_t m, size_t k, bool reversed) {
+  // meshes[m].primitives[k], of glTF material `material` (-1: the default), as a PLY file,
+  // written once for each winding (scenes/assimp/imported_ply.h). Spec "Meshes": a node whose
+  // global transform has a negative determinant turns its triangles clockwise; written
+  // reversed, so that the front faces stay the counter-clockwise ones after the mirroring
+  // transform (tangent frames are made before, from the file's winding). Tangent frames only
+  // under a normal map: the file's TANGENT, else generated.
+  const PrimitivePly& ply_file(size_t m, size_t k, bool reversed, long long material) {
     auto key = std::make_tuple(m, k, reversed);
     auto it = plys_.find(key);
     if (it != plys_.end()) return it->second;
     ImportedMesh mesh = accessors_->primitive(m, k);
+    bool normal_mapped =
+        material >= 0 && member(list("materials")[size_t(material)], "normalTexture");
+    if (!normal_mapped) {
+      mesh.tangents.clear();
+      mesh.bitangents.clear();
+    } else if (mesh.tangents.empty() && !mesh.uv.empty()) {
+      generate_tangents(mesh);
+    }
     PrimitivePly out;
+    out.tangents = !mesh.tangents.empty();
     out.normals = !mesh.normals.empty();
     for (size_t v = 0; v + 2 < mesh.positions.size(); v += 3) {
       glm::dvec3 x(mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2]);
@@ -397,10 +410,10 @@ class Importer : JsonNodeBuilder {
       for (const auto& [name, value] : attributes->items()) {
         std::string ap = pp + "/attributes/" + name;
         if (name == "POSITION" || name == "NORMAL" || name == "TEXCOORD_0") continue;
-        if (name == "TANGENT")
-          warn(ap,
-               "ignored: the normal map's tangent frame is Mitsuba's normalmap frame (the "
-               "triangle's dp/du, bitangent = normal x tangent)");
+        if (name == "TANGENT" && !attributes->contains("NORMAL"))
+          warn(ap, "ignored: without NORMAL the spec asks for flat normals and ignores TANGENT");
+        else if (name == "TANGENT")
+          continue;
         else if (name.rfind("TEXCOORD_", 0) == 0)
           warn(ap, "ignored: only TEXCOORD_0 is read");
         else if (name.rfind("COLOR_", 0) == 0)
@@ -410,7 +423,10 @@ class Importer : JsonNodeBuilder {
         else
           warn(ap, "attribute not supported by twinray, ignored");
       }
-      const PrimitivePly& ply = ply_file(m, k, glm::determinant(world) < 0.0);
+      long long material = -1;
+      if (const json* mi = member(prim, "material"))
+        material = index(*mi, pp + "/material", list("materials").size());
+      const PrimitivePly& ply = ply_file(m, k, glm::determinant(world) < 0.0, material);
       if (ply.file.empty()) {
         warn(pp, "no triangles, ignored");
         continue;
@@ -420,10 +436,8 @@ class Importer : JsonNodeBuilder {
       grow_bounds(ply, world);
       // Spec "Meshes": without NORMAL, flat normals.
       if (!ply.normals) add(*s, "face_normals", PropertyKind::Boolean, pp).boolean = true;
+      if (ply.tangents) add(*s, "vertex_tangents", PropertyKind::Boolean, pp).boolean = true;
       add_transform(*s, world, node_pointer);
-      long long material = -1;
-      if (const json* mi = member(prim, "material"))
-        material = index(*mi, pp + "/material", list("materials").size());
       attach(*s, material, pp);
       add_object(*root_, s, pp);
     }
@@ -722,9 +736,6 @@ class Importer : JsonNodeBuilder {
           map(*t, np, Bake::Normal, glm::dvec3(scale, scale, 1.0));
       add_object(*outer, bsdf, np);
       bsdf = outer;
-      warn(np,
-           "approximate: Mitsuba's normalmap frame (tangent along the triangle's dp/du, "
-           "bitangent = normal x tangent) instead of MikkTSpace vertex tangents");
     }
     if (member(m, "occlusionTexture"))
       note(p + "/occlusionTexture", "not used: the path tracer computes occlusion itself");

@@ -117,6 +117,16 @@ TEST(GpuLockstep, StrictNormals) {
     }
 }
 
+// vertex_tangents (core/interaction.h tangent_frame, glTF's TANGENT): a normal map under
+// bitangents +y and -y, in the shaders as on the CPU.
+TEST(GpuLockstep, VertexTangents) {
+  for (const char* quad : {"vertex_tangents_quad_b_plus.ply", "vertex_tangents_quad_b_minus.ply"}) {
+    LoadOptions load;
+    load.defines = {{"quad", quad}};
+    expect_lockstep(cpu_test_scene("vertex_tangents.xml"), 4, 1, EMITTER_SELECTION_UNIFORM, load);
+  }
+}
+
 // The opt-in emitter selections (scenes/emitter_selection.h): the light BVH's descent and
 // probabilities, and the power table, in the shaders as on the CPU.
 TEST(GpuLockstep, ManyEmittersByLightBvh) {

@@ -15,6 +15,8 @@
 #include "gltf_test_support.h"
 #include "scene_test_files.h"
 #include "scenes/bitmap.h"
+#include "scenes/load_scene.h"
+#include "scenes/mesh.h"
 
 namespace tr {
 namespace {
@@ -307,6 +309,65 @@ TEST(GltfImport, AlphaMaskBecomesAlphaTest) {
   ASSERT_EQ(scene.buffers.materials.size(), 1u);
   EXPECT_NE(scene.buffers.materials[0].flags & MATERIAL_ALPHA_TESTED, 0u);
   EXPECT_FLOAT_EQ(scene.buffers.materials[0].alpha_cutoff, 0.3f);
+}
+
+// A normal-mapped primitive's PLY carries tangent frames (the file's TANGENT, else twinray's
+// MikkTSpace tangents) and its shape reads them (`vertex_tangents`); the frames reach the scene
+// through the node's transform. The triangle's dp/du is +x and its v runs along +y, so up the
+// image (glTF's +y of a normal texture) is -y: bitangent -(n x t), n the face's +z (no NORMAL).
+TEST(GltfImport, NormalMapsGetTangentFrames) {
+  std::filesystem::path dir = fresh_dir();
+  const unsigned char flat[] = {128, 128, 255};
+  write_png(dir / "n.png", 1, 1, 3, flat);
+  json g = triangle_gltf();
+  g["materials"][0].erase("emissiveFactor");
+  g["images"] = {{{"uri", "n.png"}}};
+  g["textures"] = {{{"source", 0}}};
+  g["materials"][0]["normalTexture"] = {{"index", 0}};
+  GltfScene s = import_in(dir, g).scene;
+  EXPECT_TRUE(s.warnings.empty()) << s.warnings[0];
+  const Node& shape = one(*s.parsed.root, "shape", "ply");
+  EXPECT_TRUE(prop(shape, "vertex_tangents").boolean);
+  TriangleMesh mesh = load_ply_mesh(prop(shape, "filename").text, false);
+  ASSERT_EQ(mesh.attributes.count("vertex_tangent"), 1u);
+  ASSERT_EQ(mesh.attributes.count("vertex_bitangent"), 1u);
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const std::vector<float>& t = mesh.attributes["vertex_tangent"].values;
+    const std::vector<float>& b = mesh.attributes["vertex_bitangent"].values;
+    expect_vec(glm::dvec3(t[3 * v], t[3 * v + 1], t[3 * v + 2]), glm::dvec3(1.0, 0.0, 0.0), 1e-6);
+    expect_vec(glm::dvec3(b[3 * v], b[3 * v + 1], b[3 * v + 2]), glm::dvec3(0.0, -1.0, 0.0), 1e-6);
+  }
+  // In the scene: turned 90 degrees about z and scaled by 2 (triangle_gltf's nodes).
+  Scene scene = load_scene((dir / "scene.gltf").string(), {});
+  const Shape& r = scene.buffers.shapes[0];
+  ASSERT_NE(r.flags & SHAPE_HAS_TANGENTS, 0u);
+  auto word = [&](uint i) { return double(glm::uintBitsToFloat(scene.buffers.attributes[i])); };
+  for (uint v = 0; v < r.vertex_count; ++v) {
+    uint t = r.tangent_frames + 3 * v, b = t + 3 * r.vertex_count;
+    expect_vec(glm::dvec3(word(t), word(t + 1), word(t + 2)), glm::dvec3(0.0, 2.0, 0.0), 1e-6);
+    expect_vec(glm::dvec3(word(b), word(b + 1), word(b + 2)), glm::dvec3(2.0, 0.0, 0.0), 1e-6);
+  }
+
+  g["materials"][0].erase("normalTexture");
+  GltfScene plain = import_in(fresh_dir(), g).scene;
+  EXPECT_THROW(prop(one(*plain.parsed.root, "shape", "ply"), "vertex_tangents"),
+               std::runtime_error);
+}
+
+// The same warning for fields of the same shape is printed once, with its count and the shape.
+TEST(GltfImport, RepeatedWarningsAreCollapsed) {
+  json g = triangle_gltf();
+  g["materials"][0].erase("emissiveFactor");
+  json prim = g["meshes"][0]["primitives"][0];
+  prim["attributes"]["COLOR_0"] = 1;
+  g["meshes"][0]["primitives"] = {prim, prim, prim};
+  GltfScene s = import(g).scene;
+  ASSERT_EQ(s.warnings.size(), 1u) << s.warnings[1];
+  EXPECT_NE(s.warnings[0].find("meshes[0].primitives[0].attributes.COLOR_0: vertex colors are "
+                               "not supported by twinray, ignored (x 3: "
+                               "meshes[*].primitives[*].attributes.COLOR_0)"),
+            std::string::npos)
+      << s.warnings[0];
 }
 
 TEST(GltfImport, FieldsThatDoNotMapAreWarnedOneLineEach) {

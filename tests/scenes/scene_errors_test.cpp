@@ -278,6 +278,27 @@ TEST(SceneErrors, TexturedEmitterRules) {
       "color1", "a negative or NaN value in the 'radiance' texture");
 }
 
+// twinray's vertex_tangents (glTF's tangent frames): a PLY with both attributes, on a PLY only.
+TEST(SceneErrors, VertexTangentsRules) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "twinray_tangent_frame_rules";
+  std::filesystem::create_directories(dir);
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float tangent_x\nproperty float tangent_y\n"
+      "property float tangent_z\n";
+  const std::string rest = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string no_bitangent =
+      write_file(dir, "t.ply", header + rest + "0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n");
+  expect_error("<shape type=\"ply\"><string name=\"filename\" value=\"" + no_bitangent +
+                   "\"/>\n<boolean name=\"vertex_tangents\" value=\"true\"/></shape>",
+               "vertex_tangents", "needs the mesh attribute vertex_bitangent with 3 values");
+  expect_error(
+      "<shape type=\"rectangle\">\n<boolean name=\"vertex_tangents\" value=\"true\"/>"
+      "</shape>",
+      "vertex_tangents", "vertex_tangents");
+}
+
 TEST(SceneErrors, CorruptedScenesFailCleanly) {
   std::filesystem::path dir = fresh_dir();
   write_file(dir, "quad.obj", QUAD_OBJ);
