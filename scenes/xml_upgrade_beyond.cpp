@@ -35,10 +35,11 @@ std::string value_text(const Property& p) {
   return out.str();
 }
 
-// What one file gets: its first line concerned and the notes of its warning.
+// What one file gets: its first line concerned and the notes of its warning, each with the
+// lines it is about (a note repeated on several lines is said once).
 struct FileNotes {
   Location first;
-  std::vector<std::string> notes;
+  std::vector<std::pair<std::string, std::vector<int>>> notes;
 };
 
 class Upgrade {
@@ -50,7 +51,10 @@ class Upgrade {
                            [&](const FileNotes& f) { return f.first.file == loc.file; });
     if (it == files.end()) it = files.insert(files.end(), FileNotes{loc, {}});
     if (loc.line < it->first.line) it->first = loc;
-    it->notes.push_back(text + " (line " + std::to_string(loc.line) + ")");
+    auto same = std::find_if(it->notes.begin(), it->notes.end(),
+                             [&](const auto& n) { return n.first == text; });
+    if (same == it->notes.end()) same = it->notes.insert(it->notes.end(), {text, {}});
+    same->second.push_back(loc.line);
   }
 
   // Rule 2: ldrfilm as hdrfilm; output-only parameters dropped and named.
@@ -97,6 +101,24 @@ class Upgrade {
     }
   }
 
+  // Rule 6: a bitmap's filter names in any case; its MIP-map filters, trilinear and ewa (0.6's
+  // default), sampled bilinearly, and ewa's max_anisotropy dropped.
+  void bitmap(Node& texture) {
+    if (Property* f = find_property(texture, "filter_type"); f && f->kind == PropertyKind::String) {
+      std::string v = lower(f->text);
+      if (v == "trilinear" || v == "ewa") {
+        note(f->loc, "filter_type \"" + f->text + "\" read as \"bilinear\"");
+        v = "bilinear";
+      }
+      f->text = v;
+    }
+    Property* a = find_property(texture, "max_anisotropy");
+    if (a && (a->kind == PropertyKind::Float || a->kind == PropertyKind::Integer)) {
+      note(a->loc, "max_anisotropy " + value_text(*a) + " dropped (only ewa reads it)");
+      texture.props.erase(texture.props.begin() + (a - texture.props.data()));
+    }
+  }
+
   // Rule 5: Mitsuba 0.6's (rough)conductor divides eta and k by extEta.
   static void conductor(Node& bsdf) {
     Property* ext = find_property(bsdf, "ext_eta");
@@ -133,13 +155,19 @@ std::vector<std::string> upgrade_beyond_mitsuba_3_8(const std::vector<Node*>& up
   for (Node* n : upgraded) {
     Node& node = *n;
     if (node.tag == "film") u.film(node);
+    if (node.tag == "texture" && node.type == "bitmap") u.bitmap(node);
     if (node.tag == "bsdf" && (node.type == "conductor" || node.type == "roughconductor"))
       Upgrade::conductor(node);
   }
   std::vector<std::string> warnings;
   for (const FileNotes& f : u.files) {
     std::string w = to_string(f.first) + ": beyond Mitsuba 3.8's upgrade of this 0.x file: ";
-    for (size_t i = 0; i < f.notes.size(); ++i) w += (i ? "; " : "") + f.notes[i];
+    for (size_t i = 0; i < f.notes.size(); ++i) {
+      const std::vector<int>& lines = f.notes[i].second;
+      w += (i ? "; " : "") + f.notes[i].first + (lines.size() == 1 ? " (line " : " (lines ");
+      for (size_t k = 0; k < lines.size(); ++k) w += (k ? ", " : "") + std::to_string(lines[k]);
+      w += ")";
+    }
     warnings.push_back(w);
   }
   return warnings;

@@ -536,10 +536,10 @@ TEST(XmlUpgradeBeyond, StrictNormals) {
   write_file(dir, "quad.obj", QUAD_OBJ);
   auto scene = [&](const std::string& name, const std::string& version, const std::string& type,
                    const std::string& param, const std::string& value, const std::string& shape) {
-    std::string integrator =
-        value.empty() ? "<integrator type=\"" + type + "\"/>\n"
-                      : "<integrator type=\"" + type + "\">\n<boolean name=\"" + param +
-                            "\" value=\"" + value + "\"/></integrator>\n";
+    std::string integrator = value.empty()
+                                 ? "<integrator type=\"" + type + "\"/>\n"
+                                 : "<integrator type=\"" + type + "\">\n<boolean name=\"" + param +
+                                       "\" value=\"" + value + "\"/></integrator>\n";
     std::string text = film_scene(version, "", integrator);
     text.replace(text.find("<shape type=\"sphere\"/>"), 22, shape);
     return write_file(dir, name, text);
@@ -566,9 +566,39 @@ TEST(XmlUpgradeBeyond, StrictNormals) {
   // and direct only.
   std::string v2 = scene("v2.xml", "2.0.0", "path", "strictNormals", "false", smooth);
   EXPECT_NE(error_of(v2).find("unused parameter 'strictNormals'"), std::string::npos);
-  std::string ao =
-      scene("ao.xml", "3.0.0", "ambientocclusion", "strict_normals", "true", smooth);
+  std::string ao = scene("ao.xml", "3.0.0", "ambientocclusion", "strict_normals", "true", smooth);
   EXPECT_NE(error_of(ao).find("unused parameter 'strict_normals'"), std::string::npos);
+}
+
+// Rule 6: Mitsuba 0.6's filterType in any case; its MIP-map filters trilinear and ewa (with
+// maxAnisotropy) as bilinear, warned; Bitterli's 0.5 scenes set trilinear on every bitmap.
+TEST(XmlUpgradeBeyond, MipMapFiltersAreBilinear) {
+  auto bitmap = [](const std::string& params) {
+    return "<shape type=\"sphere\"><bsdf type=\"diffuse\"><texture type=\"bitmap\" "
+           "name=\"reflectance\"><string name=\"filename\" value=\"" TWINRAY_SOURCE_DIR
+           "/tests/fuzz/corpus/checker_rgb8.png\"/>\n" +
+           params + "</texture></bsdf></shape>";
+  };
+  const std::string bilinear = "<string name=\"filter_type\" value=\"bilinear\"/>";
+  expect_upgrade(bitmap("<string name=\"filterType\" value=\"trilinear\"/>"), bitmap(bilinear),
+                 "filterType");
+  expect_upgrade(bitmap("<string name=\"filterType\" value=\"EWA\"/>"
+                        "<float name=\"maxAnisotropy\" value=\"20\"/>"),
+                 bitmap(""), "filterType");
+  expect_upgrade(bitmap("<string name=\"filterType\" value=\"Nearest\"/>"),
+                 bitmap("<string name=\"filter_type\" value=\"nearest\"/>"), "filterType");
+  std::string trilinear = bitmap(
+      "<string name=\"filterType\" value=\"trilinear\"/><float name=\"maxAnisotropy\" "
+      "value=\"8\"/>");
+  std::string path =
+      write_file(fresh_dir(), "trilinear.xml", scene_text("0.5.0", trilinear + "\n" + trilinear));
+  std::vector<std::string> warnings = parse_scene_xml(path, {}).warnings;
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[1].find("beyond Mitsuba 3.8's upgrade of this 0.x file: filter_type "
+                             "\"trilinear\" read as \"bilinear\" (lines 6, 8); max_anisotropy 8 "
+                             "dropped (only ewa reads it) (lines 6, 8)"),
+            std::string::npos)
+      << warnings[1];
 }
 
 TEST(XmlUpgradeBeyond, ConductorExtEta) {
