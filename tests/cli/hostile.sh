@@ -35,6 +35,7 @@ gltf gltf_required_extension 's/"asset"/"extensionsRequired": ["KHR_draco_mesh_c
 gltf gltf_negative_ior 's/"materials": \[{/"materials": [{"extensions": {"KHR_materials_ior": {"ior": 0.5}}, /'
 gltf gltf_blend 's/"materials": \[{/"materials": [{"alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 0.5]}, /'
 gltf gltf_no_camera 's/"nodes": \[0, 1\]/"nodes": [0]/'
+gltf gltf_tangent_vec3 's/"POSITION": 0}/"POSITION": 0, "NORMAL": 0, "TANGENT": 0}/'
 { printf 'glTF\002\000\000\000\100\000\000\000'; head -c 40 /dev/zero; } >"$d/gltf_bad_length.glb"
 
 scene() {  # scene NAME BODY: a scene file d/NAME.xml with a working sensor around BODY
@@ -126,6 +127,8 @@ ply_ascii() {  # ply_ascii NAME LAST_FACE_LINE
   lit "$1_ply" "$(mesh ply "$1.ply")"
 }
 ply_ascii good_ascii '3 0 1 2'
+lit vertex_tangents_missing '<shape type="ply"><string name="filename" value="good_ascii.ply"/>
+<boolean name="vertex_tangents" value="true"/></shape>'
 # Found by scripts/fuzz (Assimp, which read PLY files then, crashed on it): no x, y, z.
 printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float v\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n1\n0\n3 0 1 1\n' >"$d/no_xyz.ply"
 lit no_xyz_ply "$(mesh ply no_xyz.ply)"
@@ -237,6 +240,7 @@ check obj_zero_area_triangles 0 'twinray: 8x8' -- $(r zero_area_obj)
 check missing_ply 3 'missing_ply\.xml:[0-9]+: .*missing\.ply' -- $(r missing_ply)
 check truncated_ply 3 'truncated_ply\.xml:[0-9]+: .*truncated\.ply' -- $(r truncated_ply)
 check ply_ascii_loads 0 'twinray: 8x8' -- $(r good_ascii_ply)
+check vertex_tangents_missing 3 'vertex_tangents_missing\.xml:[0-9]+: .*vertex_tangents needs the mesh attribute vertex_tangent ' -- $(r vertex_tangents_missing)
 check ply_face_index_out_of_range 3 'index_ascii_ply\.xml:[0-9]+: .*outside the 3 vertices' -- $(r index_ascii_ply)
 check ply_vertex_without_xyz 3 'no_xyz_ply\.xml:[0-9]+: .*x, y, z' -- $(r no_xyz_ply)
 check ply_degenerate_face 3 'two_corner_face_ply\.xml:[0-9]+: .*at least 3' -- $(r two_corner_face_ply)
@@ -291,6 +295,7 @@ check gltf_ior_below_one 3 'gltf_negative_ior\.gltf:[0-9]+: .*ior: must be at le
 check gltf_strict_blend 3 'gltf_blend\.gltf:[0-9]+: .*BLEND.*refused: --strict-gltf' -- $(g gltf_blend) --strict-gltf
 check gltf_blend_warned 0 'gltf_blend\.gltf:[0-9]+: .*approximate: BLEND as Mitsuba.s mask' -- $(g gltf_blend) -D width=8 -D height=8 -D spp=2
 check gltf_no_camera_framed 0 'no node of the scene has a camera: rendered through a camera framing' -- $(g gltf_no_camera) -D width=8 -D height=8 -D spp=2
+check gltf_tangent_not_vec4 3 'gltf_tangent_vec3\.gltf:[0-9]+: accessors\[0\]\.type: expected VEC4 for this use' -- $(g gltf_tangent_vec3)
 check gltf_camera_out_of_range 3 'gltf_ok\.gltf:[0-9]+: --camera 3: the file has 1 cameras' -- $(g gltf_ok) --camera 3
 check gltf_camera_not_a_number 2 '--camera expects auto or a camera index' -- $(g gltf_ok) --camera first
 check camera_on_xml 2 '--camera is for glTF scenes' -- $(r ok) --camera 0
