@@ -273,6 +273,13 @@ class Importer : JsonNodeBuilder {
     auto it = plys_.find(key);
     if (it != plys_.end()) return it->second;
     ImportedMesh mesh = accessors_->primitive(m, k);
+    PrimitivePly out;
+    out.normals = !mesh.normals.empty();
+    // The bounds of every vertex of the file (generated tangents drop unreferenced ones).
+    for (size_t v = 0; v + 2 < mesh.positions.size(); v += 3) {
+      glm::dvec3 x(mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2]);
+      if (!glm::all(glm::isnan(x))) out.lo = glm::min(out.lo, x), out.hi = glm::max(out.hi, x);
+    }
     bool normal_mapped =
         material >= 0 && member(list("materials")[size_t(material)], "normalTexture");
     if (!normal_mapped) {
@@ -281,13 +288,7 @@ class Importer : JsonNodeBuilder {
     } else if (mesh.tangents.empty() && !mesh.uv.empty()) {
       generate_tangents(mesh);
     }
-    PrimitivePly out;
     out.tangents = !mesh.tangents.empty();
-    out.normals = !mesh.normals.empty();
-    for (size_t v = 0; v + 2 < mesh.positions.size(); v += 3) {
-      glm::dvec3 x(mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2]);
-      if (!glm::all(glm::isnan(x))) out.lo = glm::min(out.lo, x), out.hi = glm::max(out.hi, x);
-    }
     if (!mesh.triangles.empty()) {
       if (reversed)
         for (size_t t = 0; t < mesh.triangles.size(); t += 3)

@@ -24,8 +24,10 @@ void set_gltf_tangents(ImportedMesh& mesh, const std::vector<float>& tangent_xyz
 //   +-(normal x tangent) by their orientation; a corner of a triangle without uv area takes a
 //   tangent of its position's other corners, or Duff et al.'s basis where there is none.
 // Mikkelsen's reference code also separates such corners by whether their triangles share
-// edges; here corners meeting only at a vertex (a bow tie) share their tangent.
-// Vertices whose corners get different frames are split, so the mesh may gain vertices.
+// edges (here corners meeting only at a vertex, a bow tie, share their tangent), and fills the
+// corners of triangles without uv area from their neighbours by its own rules; so results may
+// differ there. Vertices whose corners get different frames are split, and vertices no triangle
+// uses are dropped.
 void generate_tangents(ImportedMesh& mesh);
 
 }  // namespace tr
